@@ -1,0 +1,270 @@
+//! Command-line interface: one subcommand per case (SPEC §1) plus `bench`.
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use crate::body::{AbStart, PhysicalPlate, PlateProps};
+use crate::config::{BodyConfig, Case, ConfigError, RunConfig};
+use crate::flow::FlowParams;
+use crate::grid::{GridSpec, Stretch};
+use crate::record::options::RecordArgs;
+
+/// A thin plate falling through a viscous fluid: 2-D Navier–Stokes in a body-fixed grid coupled to
+/// the plate's flight mechanics, streamed live to the Rerun viewer.
+///
+/// All quantities are non-dimensional: lengths on the chord c, speeds on the reference speed U,
+/// time on c/U (one "convective time").
+#[derive(Parser, Debug)]
+#[command(name = "platefall", version, about, long_about, propagate_version = true)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Case A: a plate impulsively started at a fixed angle of attack (vortex shedding, C_L, C_D, Strouhal).
+    Static(StaticArgs),
+    /// Case B: a translating plate spun up at constant angular acceleration to a rate, then held.
+    Forced(ForcedArgs),
+    /// Case C: a translating plate free to rotate about its centre (pinned autorotation).
+    Pinned(PinnedArgs),
+    /// Case D: a plate released into free fall under gravity (the tumbling card).
+    Free(FreeArgs),
+    /// Time the flow step alone on several grid sizes (ns per cell per step, momentum vs pressure).
+    Bench(BenchArgs),
+}
+
+/// Options shared by every case.
+#[derive(Args, Debug, Clone)]
+pub struct SolverArgs {
+    /// Reynolds number U c / ν [default: 5000, or the preset's for pinned/free].
+    #[arg(long)]
+    pub re: Option<f64>,
+    /// Cells per chord N (h = c/N). The seed used 16.
+    #[arg(long, default_value_t = 32)]
+    pub resolution: usize,
+    /// End time in convective times c/U from the impulsive start [default depends on the case].
+    #[arg(long)]
+    pub t_end: Option<f64>,
+    /// Write the run summary as JSON to this file.
+    #[arg(long, value_name = "FILE")]
+    pub summary: Option<PathBuf>,
+    /// Use the seed's exact grid (N = 16, 24 × 27 stretched intervals over 10 chords); overrides
+    /// --resolution, --extent and --growth.
+    #[arg(long)]
+    pub seed_grid: bool,
+    /// Plate thickness as a chord fraction (rounded to whole cells, at least one).
+    #[arg(long, default_value_t = 1.0 / 16.0)]
+    pub thickness: f64,
+    /// Distance from the plate to the outer boundary, in chords.
+    #[arg(long, default_value_t = 15.0)]
+    pub extent: f64,
+    /// Cap on the ratio of neighbouring cell sizes in the stretched region.
+    #[arg(long, default_value_t = 1.045)]
+    pub growth: f64,
+    /// Courant number of the convective time-step limit.
+    #[arg(long, default_value_t = 0.4)]
+    pub cfl: f64,
+    /// Time-step ceiling (seed: 0.01).
+    #[arg(long, default_value_t = 0.01)]
+    pub dt_max: f64,
+    /// The seed's rotation rule Δt·|θ̇| ≤ CC.
+    #[arg(long, default_value_t = 0.005)]
+    pub cc: f64,
+}
+
+#[derive(Args, Debug)]
+pub struct StaticArgs {
+    /// Angle of attack α in radians, in [−π, π].
+    #[arg(long, default_value_t = 0.4, allow_negative_numbers = true)]
+    pub alpha: f64,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    #[command(flatten)]
+    pub record: RecordArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct ForcedArgs {
+    /// Final rotation rate θ̇ c/U (positive: counter-clockwise, nose up).
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    pub rate: f64,
+    /// Spin-up time from α = 0 to the final rate at constant angular acceleration.
+    #[arg(long, default_value_t = 1.0)]
+    pub spinup: f64,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    #[command(flatten)]
+    pub record: RecordArgs,
+}
+
+/// Plate properties and the body integrator (pinned and free cases).
+#[derive(Args, Debug, Clone)]
+pub struct BodyArgs {
+    /// Physical preset giving Re, m*, I*, g*: `card` is the seed's card in sea-level air (SPEC §8).
+    #[arg(long, value_enum, default_value_t = Preset::Card)]
+    pub preset: Preset,
+    /// Mass ratio m* = m/(ρc²b) (overrides the preset).
+    #[arg(long)]
+    pub mass: Option<f64>,
+    /// Inertia ratio I* = I/(ρc⁴b) (overrides the preset).
+    #[arg(long)]
+    pub inertia: Option<f64>,
+    /// Gravity g* = g c/U² (overrides the preset; ignored by `pinned`).
+    #[arg(long)]
+    pub gravity: Option<f64>,
+    /// Adams–Bashforth order for the plate's equations of motion, 1..=6.
+    #[arg(long, default_value_t = 2)]
+    pub ab_order: usize,
+    /// How the Adams–Bashforth history is started at release.
+    #[arg(long, value_enum, default_value_t = AbStartArg::Ramp)]
+    pub ab_start: AbStartArg,
+    /// Hold the plate at its launch attitude for this long before release (flow development).
+    #[arg(long, default_value_t = 5.0)]
+    pub develop: f64,
+    /// Stop after this many net turns after release (or at --t-end, whichever comes first).
+    #[arg(long)]
+    pub turns: Option<f64>,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
+pub enum Preset {
+    /// The seed's card: chord 3 in, span 8 in, 7.02e-3 lbf, U = 3 ft/s in sea-level air.
+    Card,
+    /// No preset: give --re, --mass, --inertia and --gravity.
+    None,
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
+pub enum AbStartArg {
+    /// Raise the order 1, 2, … over the first steps.
+    Ramp,
+    /// The seed's start: extrapolate the history linearly backwards.
+    Extrapolate,
+}
+
+#[derive(Args, Debug)]
+pub struct PinnedArgs {
+    /// Angle of attack α₀ (rad) held during development, then released.
+    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
+    pub alpha0: f64,
+    #[command(flatten)]
+    pub body: BodyArgs,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    #[command(flatten)]
+    pub record: RecordArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct FreeArgs {
+    /// Launch speed V₀ on the reference speed (the card: 1.0 = 3 ft/s).
+    #[arg(long, default_value_t = 1.0)]
+    pub v0: f64,
+    /// Launch flight-path angle γ₀ (rad; −π/4 is down and to the right).
+    #[arg(long, default_value_t = -std::f64::consts::FRAC_PI_4, allow_negative_numbers = true)]
+    pub gamma0: f64,
+    /// Launch angle of attack α₀ (rad); the plate is held at θ = γ₀ + α₀ until release.
+    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
+    pub alpha0: f64,
+    #[command(flatten)]
+    pub body: BodyArgs,
+    #[command(flatten)]
+    pub solver: SolverArgs,
+    #[command(flatten)]
+    pub record: RecordArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct BenchArgs {
+    /// Cells per chord of the grids to time (each with the default extent and growth cap).
+    #[arg(long, value_delimiter = ',', default_values_t = vec![16, 32, 64, 96])]
+    pub resolutions: Vec<usize>,
+    /// Steps timed per grid (after 5 warm-up steps).
+    #[arg(long, default_value_t = 50)]
+    pub steps: usize,
+    /// Write the results as JSON to this file.
+    #[arg(long, value_name = "FILE")]
+    pub json: Option<PathBuf>,
+}
+
+impl SolverArgs {
+    fn grid(&self) -> GridSpec {
+        if self.seed_grid {
+            return GridSpec::seed();
+        }
+        GridSpec {
+            resolution: self.resolution,
+            thickness: self.thickness,
+            extent_x: self.extent,
+            extent_y: self.extent,
+            stretch: Stretch::GrowthCap(self.growth),
+        }
+    }
+
+    fn config(&self, case: Case, default_re: f64, default_t_end: f64, body: Option<BodyConfig>, turns: Option<f64>) -> RunConfig {
+        RunConfig {
+            case,
+            grid: self.grid(),
+            flow: FlowParams { re: self.re.unwrap_or(default_re), cfl: self.cfl, ..FlowParams::default() },
+            body,
+            t_end: self.t_end.unwrap_or(default_t_end),
+            turns,
+            dt_max: self.dt_max,
+            cc: self.cc,
+        }
+    }
+}
+
+impl BodyArgs {
+    /// Plate properties and default Re: the preset's, overridden by explicit values.
+    fn resolve(&self) -> Result<(BodyConfig, Option<f64>), ConfigError> {
+        let (preset, base, re) = match self.preset {
+            Preset::Card => {
+                let card = PhysicalPlate::card();
+                (Some("card".to_string()), Some(card.props()), Some(card.reynolds()))
+            }
+            Preset::None => (None, None, None),
+        };
+        let pick = |name: &str, given: Option<f64>, from: Option<f64>| {
+            given.or(from).ok_or_else(|| ConfigError(format!("{name} is required with --preset none")))
+        };
+        let props = PlateProps {
+            mass: pick("--mass", self.mass, base.map(|b| b.mass))?,
+            inertia: pick("--inertia", self.inertia, base.map(|b| b.inertia))?,
+            gravity: pick("--gravity", self.gravity, base.map(|b| b.gravity))?,
+        };
+        let start = match self.ab_start {
+            AbStartArg::Ramp => AbStart::Ramp,
+            AbStartArg::Extrapolate => AbStart::Extrapolate,
+        };
+        Ok((BodyConfig { preset, props, ab_order: self.ab_order, ab_start: start }, re))
+    }
+}
+
+/// The run configuration of a case subcommand, validated.
+pub fn run_config(cmd: &Command) -> Result<RunConfig, ConfigError> {
+    let cfg = match cmd {
+        Command::Static(a) => a.solver.config(Case::Static { alpha: a.alpha }, 5000.0, 40.0, None, None),
+        Command::Forced(a) => {
+            let t_end = a.spinup + 6.0 * std::f64::consts::PI / a.rate.abs().max(1e-3);
+            a.solver.config(Case::Forced { rate: a.rate, spinup: a.spinup }, 5000.0, t_end.min(200.0), None, None)
+        }
+        Command::Pinned(a) => {
+            let (body, re) = a.body.resolve()?;
+            let re = a.solver.re.or(re).ok_or_else(|| ConfigError("--re is required with --preset none".into()))?;
+            let case = Case::Pinned { alpha0: a.alpha0, develop: a.body.develop };
+            a.solver.config(case, re, 60.0, Some(body), a.body.turns)
+        }
+        Command::Free(a) => {
+            let (body, re) = a.body.resolve()?;
+            let re = a.solver.re.or(re).ok_or_else(|| ConfigError("--re is required with --preset none".into()))?;
+            let case = Case::Free { v0: a.v0, gamma0: a.gamma0, alpha0: a.alpha0, develop: a.body.develop };
+            a.solver.config(case, re, 80.0, Some(body), Some(a.body.turns.unwrap_or(10.0)))
+        }
+        Command::Bench(_) => return Err(ConfigError("bench has no run configuration".into())),
+    };
+    cfg.validate()?;
+    Ok(cfg)
+}

@@ -1,0 +1,103 @@
+//! Precomputed metrics of the stretched MAC grid, extended by ghost layers.
+//!
+//! u lives on vertical faces (xₙ[i], y_c[j]), v on horizontal faces (x_c[i], yₙ[j]), p at centres.
+//! Every vector here is indexed by the interior index shifted by [`GHOST`] (use the `*_at` helpers).
+use super::array::{extend_nodes, GHOST};
+use crate::grid::Grid;
+
+/// One axis: nodes and centres including ghosts.
+#[derive(Clone, Debug)]
+pub struct Axis {
+    /// Node coordinates, index k + GHOST for k = −GHOST ..= n + GHOST.
+    pub nodes: Vec<f64>,
+    /// Cell centres, index k + GHOST for k = −GHOST .. n + GHOST.
+    pub centres: Vec<f64>,
+}
+
+impl Axis {
+    pub fn new(nodes: &[f64]) -> Self {
+        let nodes = extend_nodes(nodes);
+        let centres = nodes.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
+        Axis { nodes, centres }
+    }
+    #[inline(always)]
+    pub fn node(&self, k: isize) -> f64 {
+        self.nodes[(k + GHOST as isize) as usize]
+    }
+    #[inline(always)]
+    pub fn centre(&self, k: isize) -> f64 {
+        self.centres[(k + GHOST as isize) as usize]
+    }
+    /// Width of cell k.
+    #[inline(always)]
+    pub fn width(&self, k: isize) -> f64 {
+        self.node(k + 1) - self.node(k)
+    }
+    /// Distance between the centres of cells k−1 and k (the control volume of the face at node k).
+    #[inline(always)]
+    pub fn centre_gap(&self, k: isize) -> f64 {
+        self.centre(k) - self.centre(k - 1)
+    }
+}
+
+/// Stencil coefficients for one direction of one velocity component, indexed by the face index
+/// along that direction (0-based interior index, no shift).
+#[derive(Clone, Debug, Default)]
+pub struct Stencil1 {
+    /// 1 / (control-volume length along this direction).
+    pub inv_cv: Vec<f64>,
+    /// 1 / (distance to the next / previous point of the same component).
+    pub inv_next: Vec<f64>,
+    pub inv_prev: Vec<f64>,
+}
+
+/// Metrics for the momentum stencils.
+#[derive(Clone, Debug)]
+pub struct Metrics {
+    pub x: Axis,
+    pub y: Axis,
+    /// u-faces along x (index i = face index 0..=nx): CV = [x_c[i−1], x_c[i]], neighbours at xₙ[i±1].
+    pub u_x: Stencil1,
+    /// u-faces along y (index j = row 0..ny): CV = [yₙ[j], yₙ[j+1]], neighbours at y_c[j±1].
+    pub u_y: Stencil1,
+    /// v-faces along x (index i = column 0..nx).
+    pub v_x: Stencil1,
+    /// v-faces along y (index j = face index 0..=ny).
+    pub v_y: Stencil1,
+    /// Flux weight of the left cell when v is averaged to the u-face at xₙ[i]: dx[i−1]/(dx[i−1]+dx[i]).
+    pub wx_left: Vec<f64>,
+    /// Flux weight of the lower cell when u is averaged to the v-face at yₙ[j]: dy[j−1]/(dy[j−1]+dy[j]).
+    pub wy_low: Vec<f64>,
+}
+
+impl Metrics {
+    pub fn new(grid: &Grid) -> Self {
+        let x = Axis::new(&grid.xn);
+        let y = Axis::new(&grid.yn);
+        let faces = |a: &Axis, n: usize| Stencil1 {
+            // Face k at node k: CV between centres k−1 and k, neighbours at nodes k±1.
+            inv_cv: (0..=n as isize).map(|k| 1.0 / a.centre_gap(k)).collect(),
+            inv_next: (0..=n as isize).map(|k| 1.0 / a.width(k)).collect(),
+            inv_prev: (0..=n as isize).map(|k| 1.0 / a.width(k - 1)).collect(),
+        };
+        let cells = |a: &Axis, n: usize| Stencil1 {
+            // Point at centre k: CV is cell k, neighbours at centres k±1.
+            inv_cv: (0..n as isize).map(|k| 1.0 / a.width(k)).collect(),
+            inv_next: (0..n as isize).map(|k| 1.0 / a.centre_gap(k + 1)).collect(),
+            inv_prev: (0..n as isize).map(|k| 1.0 / a.centre_gap(k)).collect(),
+        };
+        let low_weight = |a: &Axis, n: usize| -> Vec<f64> {
+            (0..=n as isize).map(|k| a.width(k - 1) / (a.width(k - 1) + a.width(k))).collect()
+        };
+        Metrics {
+            u_x: faces(&x, grid.nx),
+            u_y: cells(&y, grid.ny),
+            v_x: cells(&x, grid.nx),
+            v_y: faces(&y, grid.ny),
+            wx_left: low_weight(&x, grid.nx),
+            wy_low: low_weight(&y, grid.ny),
+            x,
+            y,
+        }
+    }
+}

@@ -1,0 +1,306 @@
+//! The body-fixed stretched Cartesian grid (SPEC §4).
+//!
+//! The plate occupies the rectangle [−½, ½] × [−t/2, t/2] in body coordinates (chord = 1). The grid is
+//! uniform with spacing h = 1/N over that core (N cells along the chord, `n_thick` cells through the
+//! plate) and stretches geometrically outward from each edge of the core: a patch of `n` intervals
+//! covering a length L is the seed's exponential map
+//!
+//! ```text
+//!     s(η) = L (e^{Cη} − 1) / (e^{C} − 1),   η = k/n,  k = 0..n,
+//! ```
+//!
+//! whose first interval equals h when `C = n ln(1 + (h/L)(e^C − 1))` (solved by [`stretch_coefficient`]).
+//! Consecutive intervals of this map grow by the constant ratio r = e^{C/n}, so a cap on the growth
+//! ratio fixes the number of intervals ([`intervals_for_growth`]).
+use std::fmt;
+
+/// What the user asks for: resolution, plate thickness, extent and growth cap.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct GridSpec {
+    /// Cells per chord, N (h = 1/N).
+    pub resolution: usize,
+    /// Plate thickness as a chord fraction; rounded to a whole number of cells, at least one.
+    pub thickness: f64,
+    /// Distance from each plate edge (x) to the outer boundary, in chords.
+    pub extent_x: f64,
+    /// Distance from each plate face (y) to the outer boundary, in chords.
+    pub extent_y: f64,
+    /// How the stretched patches are sized.
+    pub stretch: Stretch,
+}
+
+/// How many intervals a stretched patch has.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Stretch {
+    /// As few intervals as keep the cell growth ratio at or below this cap (e.g. 1.04).
+    GrowthCap(f64),
+    /// Exactly this many intervals in x and in y (the seed's style: 24 and 27).
+    Intervals { nx: usize, ny: usize },
+}
+
+/// Grid construction errors: each names the value and the accepted range.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GridError(pub String);
+
+impl fmt::Display for GridError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+impl std::error::Error for GridError {}
+
+impl GridSpec {
+    /// The grid of the seed (N = 16, one-cell plate, 24 × 27 intervals over 10 chords).
+    pub fn seed() -> Self {
+        GridSpec {
+            resolution: 16,
+            thickness: 1.0 / 16.0,
+            extent_x: 10.0,
+            extent_y: 10.0,
+            stretch: Stretch::Intervals { nx: 24, ny: 27 },
+        }
+    }
+
+    /// A modern grid: N cells per chord, the seed's plate thickness, 15 chords of extent, 4.5 % growth cap.
+    pub fn modern(resolution: usize) -> Self {
+        GridSpec {
+            resolution,
+            thickness: 1.0 / 16.0,
+            extent_x: 15.0,
+            extent_y: 15.0,
+            stretch: Stretch::GrowthCap(1.045),
+        }
+    }
+
+    /// Checks every input, naming the bad value and the accepted range.
+    pub fn validate(&self) -> Result<(), GridError> {
+        let n = self.resolution;
+        if !(4..=1024).contains(&n) {
+            return Err(GridError(format!("resolution {n} is out of range: cells per chord must be in 4..=1024")));
+        }
+        let h = 1.0 / n as f64;
+        if !(self.thickness.is_finite() && self.thickness > 0.0 && self.thickness <= 0.5) {
+            return Err(GridError(format!(
+                "plate thickness {} is out of range: must be in (0, 0.5] chords",
+                self.thickness
+            )));
+        }
+        for (name, e) in [("extent_x", self.extent_x), ("extent_y", self.extent_y)] {
+            if !(e.is_finite() && (1.0..=200.0).contains(&e)) {
+                return Err(GridError(format!("{name} {e} is out of range: must be in [1, 200] chords")));
+            }
+        }
+        match self.stretch {
+            Stretch::GrowthCap(r) => {
+                if !(r.is_finite() && r > 1.0 && r <= 1.5) {
+                    return Err(GridError(format!("growth cap {r} is out of range: must be in (1, 1.5]")));
+                }
+            }
+            Stretch::Intervals { nx, ny } => {
+                for (name, k, ext) in [("x", nx, self.extent_x), ("y", ny, self.extent_y)] {
+                    if k < 1 || k as f64 * h >= ext {
+                        return Err(GridError(format!(
+                            "{k} stretched intervals in {name} cannot span {ext} chords from spacing {h}: need 1 <= n < {}",
+                            (ext / h).ceil()
+                        )));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Solves `C = n ln(1 + (h/L)(e^C − 1))` for the non-trivial root C > 0 (SPEC §4).
+///
+/// A root exists exactly when the patch must stretch, i.e. when `n h < L`. Bracketed bisection to
+/// machine precision (the function is concave in C, so the bracket is found by doubling).
+pub fn stretch_coefficient(h: f64, length: f64, n: usize) -> Option<f64> {
+    let n = n as f64;
+    if !(h > 0.0 && length > 0.0 && n * h < length) {
+        return None;
+    }
+    let ratio = h / length;
+    // f(C) = C/n − ln(1 + ratio (e^C − 1)); positive just above 0, negative for large C.
+    let f = |c: f64| c / n - (ratio * c.exp_m1()).ln_1p();
+    let mut hi = 1.0;
+    while f(hi) > 0.0 {
+        hi *= 2.0;
+        if hi > 700.0 {
+            return None;
+        }
+    }
+    let mut lo = hi / 2.0;
+    while f(lo) <= 0.0 && lo > 1e-12 {
+        lo /= 2.0;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+        if hi - lo <= 1e-15 * hi {
+            break;
+        }
+    }
+    Some(0.5 * (lo + hi))
+}
+
+/// The fewest intervals of a geometric patch starting at spacing h that covers `length` with a
+/// growth ratio no larger than `cap` (the series h(rⁿ − 1)/(r − 1) = L).
+pub fn intervals_for_growth(h: f64, length: f64, cap: f64) -> usize {
+    let n = ((1.0 + length * (cap - 1.0) / h).ln() / cap.ln()).ceil();
+    (n as usize).max(1)
+}
+
+/// Offsets 0 = s₀ < s₁ < … < s_n = L of a stretched patch with first interval h (SPEC §4).
+pub fn stretched_offsets(h: f64, length: f64, n: usize) -> Vec<f64> {
+    match stretch_coefficient(h, length, n) {
+        Some(c) => {
+            let denom = c.exp_m1();
+            (0..=n).map(|k| length * (c * k as f64 / n as f64).exp_m1() / denom).collect()
+        }
+        // n h ≥ L: uniform spacing L/n (no stretching needed).
+        None => (0..=n).map(|k| length * k as f64 / n as f64).collect(),
+    }
+}
+
+/// The grid with all the metrics the solver needs. Cell (i, j) spans [xn[i], xn[i+1]] × [yn[j], yn[j+1]].
+#[derive(Clone, Debug)]
+pub struct Grid {
+    pub spec: GridSpec,
+    pub nx: usize,
+    pub ny: usize,
+    /// Uniform core spacing h = 1/N.
+    pub h: f64,
+    /// Actual plate thickness (a whole number of cells).
+    pub thickness: f64,
+    pub xn: Vec<f64>,
+    pub yn: Vec<f64>,
+    /// Cell centres and widths.
+    pub xc: Vec<f64>,
+    pub yc: Vec<f64>,
+    pub dx: Vec<f64>,
+    pub dy: Vec<f64>,
+    /// Plate cells are i0..i1 × j0..j1.
+    pub i0: usize,
+    pub i1: usize,
+    pub j0: usize,
+    pub j1: usize,
+    /// Stretching coefficients C_x, C_y of the patches (None if a patch needed no stretching).
+    pub cx: Option<f64>,
+    pub cy: Option<f64>,
+    /// Number of stretched intervals in x and y on each side.
+    pub nsx: usize,
+    pub nsy: usize,
+}
+
+impl Grid {
+    /// Builds the grid; the input is validated first.
+    pub fn new(spec: &GridSpec) -> Result<Grid, GridError> {
+        spec.validate()?;
+        let n = spec.resolution;
+        let h = 1.0 / n as f64;
+        let n_thick = ((spec.thickness / h).round() as usize).max(1);
+        let thickness = n_thick as f64 * h;
+        let (nsx, nsy) = match spec.stretch {
+            Stretch::GrowthCap(r) => (
+                intervals_for_growth(h, spec.extent_x, r),
+                intervals_for_growth(h, spec.extent_y, r),
+            ),
+            Stretch::Intervals { nx, ny } => (nx, ny),
+        };
+        let axis = |half: f64, n_core: usize, ext: f64, ns: usize| -> Vec<f64> {
+            let s = stretched_offsets(h, ext, ns);
+            let mut v: Vec<f64> = s.iter().rev().map(|o| -half - o).collect();
+            for k in 1..=n_core {
+                v.push(-half + k as f64 * h);
+            }
+            v.extend(s.iter().skip(1).map(|o| half + o));
+            v
+        };
+        let xn = axis(0.5, n, spec.extent_x, nsx);
+        let yn = axis(0.5 * thickness, n_thick, spec.extent_y, nsy);
+        let nx = xn.len() - 1;
+        let ny = yn.len() - 1;
+        let centres = |v: &[f64]| v.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect::<Vec<_>>();
+        let widths = |v: &[f64]| v.windows(2).map(|w| w[1] - w[0]).collect::<Vec<_>>();
+        Ok(Grid {
+            spec: spec.clone(),
+            nx,
+            ny,
+            h,
+            thickness,
+            xc: centres(&xn),
+            yc: centres(&yn),
+            dx: widths(&xn),
+            dy: widths(&yn),
+            i0: nsx,
+            i1: nsx + n,
+            j0: nsy,
+            j1: nsy + n_thick,
+            cx: stretch_coefficient(h, spec.extent_x, nsx),
+            cy: stretch_coefficient(h, spec.extent_y, nsy),
+            nsx,
+            nsy,
+            xn,
+            yn,
+        })
+    }
+
+    /// The same grid with no plate cells (for verification against exact solutions).
+    pub fn without_plate(mut self) -> Grid {
+        self.i1 = self.i0;
+        self.j1 = self.j0;
+        self
+    }
+
+    /// Whether the grid has plate cells.
+    pub fn has_plate(&self) -> bool {
+        self.i1 > self.i0 && self.j1 > self.j0
+    }
+
+    /// Number of cells.
+    pub fn cells(&self) -> usize {
+        self.nx * self.ny
+    }
+
+    /// Whether cell (i, j) is inside the plate.
+    #[inline]
+    pub fn is_solid(&self, i: usize, j: usize) -> bool {
+        (self.i0..self.i1).contains(&i) && (self.j0..self.j1).contains(&j)
+    }
+
+    /// The solid mask, row-major with x fastest.
+    pub fn solid_mask(&self) -> Vec<bool> {
+        let mut m = vec![false; self.cells()];
+        for j in self.j0..self.j1 {
+            for i in self.i0..self.i1 {
+                m[i + self.nx * j] = true;
+            }
+        }
+        m
+    }
+
+    /// Largest ratio of neighbouring cell widths (either way) along x and y.
+    pub fn max_growth(&self) -> f64 {
+        self.dx
+            .windows(2)
+            .chain(self.dy.windows(2))
+            .map(|w| (w[1] / w[0]).max(w[0] / w[1]))
+            .fold(1.0, f64::max)
+    }
+
+    /// Outer cell sizes (the largest spacing) in x and y.
+    pub fn outer_spacing(&self) -> (f64, f64) {
+        (self.dx[0], self.dy[0])
+    }
+
+    /// The plain-data geometry for recording and post-processing.
+    pub fn geometry(&self) -> crate::record::messages::GridGeometry {
+        crate::record::messages::GridGeometry { xn: self.xn.clone(), yn: self.yn.clone(), solid: self.solid_mask() }
+    }
+}
