@@ -1,0 +1,28 @@
+//! Post-processing of flow snapshots (SPEC §7): vorticity, stream function, streamlines in the
+//! four observer frames, and resampling from the stretched MAC grid onto uniform images.
+//!
+//! Everything here is a pure function of a [`GridGeometry`](crate::record::messages::GridGeometry)
+//! and a [`FieldSnapshot`](crate::record::messages::FieldSnapshot): no I/O, no Rerun types. The
+//! logger thread (`record::scene`) calls it, so this work runs beside the solver, not in it.
+//!
+//! - [`fields`]: the staggered-grid quantities. [`vorticity_at_nodes`] (ω = ∂v/∂x − ∂u/∂y at cell
+//!   corners), [`stream_function_at_nodes`] (ψ with u = ψ_y, v = −ψ_x, integrated from the MAC face
+//!   fluxes: exact for a discretely divergence-free field), and [`StreamFrame`], the observer frames
+//!   of SPEC §7 with the velocity and stream function of each observer.
+//! - [`resample`]: separable bilinear interpolation from a tensor-product (stretched) grid onto a
+//!   uniform image ([`ImageGrid`], [`AxisWeights`]).
+//! - [`contour`]: iso-lines of a scalar on a tensor grid (marching squares, joined into polylines).
+//! - [`painter`]: [`FieldPainter`] puts it together: one call turns a snapshot into the three
+//!   images (vorticity, pressure, speed) and the streamlines, with all interpolation weights
+//!   precomputed once per run.
+pub mod contour;
+pub mod fields;
+pub mod painter;
+pub mod resample;
+
+pub use contour::{isolines, simplify_polyline, Polyline};
+pub use fields::{
+    cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, StreamFrame,
+};
+pub use painter::{FieldPainter, PaintedFields, PainterOptions};
+pub use resample::{bilinear, AxisWeights, ImageGrid, Window};

@@ -1,0 +1,111 @@
+//! Recording: plain-data messages, the logger thread, Rerun sinks, blueprint, CSV, progress.
+//!
+//! # Contract with the solver
+//!
+//! ```ignore
+//! let opts = args.record.resolve(case, t_end)?;            // validates, before anything runs
+//! let mut logger = record::spawn_logger(opts, run_info)?;  // opens sinks, starts the thread
+//! loop {
+//!     /* advance one step */
+//!     logger.step(sample)?;                  // blocking send: time series are never dropped
+//!     if logger.field_due(sample.t) {        // the field cadence (--field-every)
+//!         logger.offer_field(snapshot);      // non-blocking; false = skipped (counted)
+//!     }
+//! }
+//! let report = logger.finish(outcome)?;      // writes, finalises the .rrd, flushes the CSV
+//! for line in report.lines() { eprintln!("{line}"); }
+//! report.serve_until_interrupted(&stop)?;    // --serve: keep serving until Ctrl-C sets `stop`
+//! ```
+//!
+//! - The solver thread only moves plain data ([`messages`]) into a bounded crossbeam channel
+//!   (`RecordOptions::channel_capacity`, default 1024 messages). Everything else — painting the
+//!   fields ([`crate::post`]), Rerun, CSV, progress — runs on the logger thread, which alone owns
+//!   the `RecordingStream` and sets its (per-thread) time.
+//! - At most `max_fields_in_flight` (default 4) snapshots are queued at once, so memory stays
+//!   bounded; more are skipped and counted. The count is in the recording (`/run/skipped_fields`
+//!   scalar, a warning line in `/run/status`, and `/run/summary`) and in [`LoggerReport`].
+//! - Dropping the [`Logger`] without `finish` (an error path, a panic) still finalises every
+//!   sink; the recording then says "interrupted".
+//!
+//! # Sinks (any combination in one run)
+//!
+//! - `--save FILE.rrd` (default `recordings/<case>.rrd`; `--no-save` for none): Rerun's
+//!   `FileSink` (LZ4-compressed chunks). Its footer is written when it is finalised at
+//!   `finish`, on every exit path, so `rerun rrd verify` passes.
+//! - `--serve [--bind 127.0.0.1] [--port 9876] [--server-memory-limit 25%]`: a gRPC server
+//!   (`GrpcServerSink`); viewers run `rerun rerun+http://HOST:PORT/proxy`, also after the run
+//!   (history kept up to the memory limit), until Ctrl-C.
+//! - `--connect URL`: push to an already-running viewer. Rerun's `GrpcSink` blocks once its queue
+//!   fills while no viewer listens; here it sits behind a bounded, never-blocking queue on its own
+//!   thread (`sinks::DetachedGrpcSink`): if the viewer is missing, slow or goes away, messages for
+//!   it are dropped (counted, reported), and neither the solver nor the file ever wait for it.
+//! - `--spawn`: start a local viewer (`rerun` on PATH, checked before the run) and stream to it;
+//!   with `--serve` the viewer is pointed at our server instead.
+//!
+//! # Timelines
+//!
+//! `time`: convective time t·U/c as a duration timeline (the viewer shows it as seconds, so
+//! playback at 1× runs one c/U per second); `step`: the solver step (sequence). The blueprint
+//! opens on `time`.
+//!
+//! # Entity layout (stable)
+//!
+//! ```text
+//! /world                          inertial frame, physical coordinates: Y up, gravity −Y
+//! /world/plate                    Transform3D per step: translation (X, Y), rotation θ about z
+//! /world/plate/outline            LineStrips2D, the plate rectangle in body coordinates (static)
+//! /world/plate/vorticity          DepthImage (f16) of ω, body coordinates, CyanToYellow, ±10
+//! /world/plate/pressure           DepthImage (f16) of p, Spectral, ±1.5
+//! /world/plate/speed              DepthImage (f16) of |u − w| in the streamline frame, Viridis, [0, 2]
+//!                                 (each image: static Transform3D = window corner + pixel size;
+//!                                  NaN inside the plate)
+//! /world/plate/streamlines        LineStrips2D, contours of the relative stream function ψ − ψ_w
+//! /world/trajectory/NNNN          LineStrips2D, the centre's path, one entity per time segment
+//! /world/strobe/NNNN              LineStrips2D, plate outlines every 0.5 c/U along the path
+//! /world/follow                   Transform3D per step: translation (X, Y), scale (1, −1):
+//!                                 a non-rotating frame on the plate, Y mirrored for the screen
+//! /world/screen                   Transform3D scale (1, −1): the inertial frame for the screen
+//! /coefficients/{cl,cd,cm}        Scalars per step (SeriesLines: C_L, C_D, C_M)
+//! /motion/{speed,omega,gamma,alpha}  Scalars per step (V, θ̇, γ, α; radians)
+//! /solver/dt                      Scalars per step
+//! /polar/coefficients/{cl,cd,cm}/NNNN  LineStrips2D of (α, C) grown over time
+//! /polar/motion/{speed,omega}/NNNN     LineStrips2D of (α, V) and (α, θ̇)
+//! /polar/axes                     static axes and tick labels of the α plots
+//! /polar/screen                   Transform3D scale (1, −1) for the α plots
+//! /run/config                     TextDocument (markdown): title, version, command line, config JSON
+//! /run/summary                    TextDocument: outcome, report, summary JSON, skipped snapshots
+//! /run/status                     TextLog: started / skipped-snapshot warnings / completed,
+//!                                 diverged or interrupted
+//! /run/skipped_fields             Scalars at every field snapshot: snapshots skipped so far
+//! ```
+//! The 2D view draws +y downwards, so the views look at the data through the mirrored frames
+//! (`/world/follow`, `/world/screen`, `/polar/screen`) instead of mirroring the data: the data
+//! stay in physical coordinates and the picture has Y up, gravity down.
+//!
+//! The "growing" curves (trajectory, strobe, α plots) are split into segments of
+//! max(2, t_end/40) c/U, one entity each, re-sent only while their segment grows, so the total
+//! size stays linear in the run length and scrubbing shows the curve up to the cursor.
+//!
+//! # Size budget
+//!
+//! Field snapshots dominate. Each holds three f16 images (256 × 197 px by default) and the
+//! streamlines: about 0.25 MB on disk after LZ4. The defaults (`--field-every 0.1`,
+//! `--field-res 256`) give 10 snapshots per c/U, so a 60 c/U free fall is ≈ 600 snapshots ≈ 150 MB
+//! plus ~2 MB of time series (15 000 steps). For a bug report (< 20 MB):
+//! `--field-every 0.5 --field-res 128` (≈ 0.07 MB per snapshot, 120 snapshots).
+mod blueprint;
+pub mod csv;
+pub mod logger;
+pub mod messages;
+pub mod options;
+mod progress;
+mod scene;
+mod sinks;
+
+pub use csv::CSV_HEADER;
+pub use logger::{spawn_logger, ConnectReport, Logger, LoggerReport, APPLICATION_ID};
+pub use options::{
+    OptionsError, ProgressMode, RecordArgs, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY,
+    DEFAULT_FIELD_RES,
+};
+pub use scene::paths;
