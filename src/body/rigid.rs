@@ -1,0 +1,238 @@
+//! Rigid-body motion of the plate in Cartesian inertial form (SPEC §6), non-dimensional (SPEC §2).
+//!
+//! Inertial frame (SPEC §3): X right, Y up, gravity −Y, θ counter-clockwise. The equations are
+//! m* Ẍ = F_X, m* Ÿ = F_Y − m* g*, I* θ̈ = M, with (F_X, F_Y) in inertial axes, which stay regular
+//! at V = 0 (unlike the seed's wind-axis form); V, γ, α are derived quantities.
+
+use std::f64::consts::PI;
+
+use super::adams::{AbError, AbStart, AdamsBashforth};
+
+/// Non-dimensional plate properties (SPEC §2): m* = m/(ρc²b), I* = I/(ρc⁴b), g* = g c/U².
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct PlateProps {
+    /// m*, mass per unit span by ρc².
+    pub mass: f64,
+    /// I*, pitch inertia about the centre per unit span by ρc⁴.
+    pub inertia: f64,
+    /// g*, gravity by U²/c.
+    pub gravity: f64,
+}
+
+/// Rigid-body state in the inertial frame (SPEC §3, §6): centre (X, Y), pitch θ and their rates.
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct BodyState {
+    /// X of the centre.
+    pub x: f64,
+    /// Y of the centre (up).
+    pub y: f64,
+    /// Pitch angle θ (counter-clockwise).
+    pub theta: f64,
+    /// Ẋ.
+    pub xdot: f64,
+    /// Ẏ.
+    pub ydot: f64,
+    /// θ̇.
+    pub omega: f64,
+}
+
+/// Which degrees of freedom the body equations move (SPEC §1, cases A–D).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Dof {
+    /// Cases A, B: the caller imposes the motion; [`advance`] leaves the state untouched.
+    Prescribed,
+    /// Case C, pinned: θ free (I* θ̈ = M); translation at constant velocity (Ẍ = Ÿ = 0), no gravity.
+    PitchOnly,
+    /// Case D: X, Y, θ all free, with gravity.
+    Free,
+}
+
+/// Fluid load per unit span on the plate (SPEC §5): force (F_X, F_Y) in INERTIAL axes and moment M
+/// about the centre (counter-clockwise positive), non-dimensional by ρU²c and ρU²c².
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct Loads {
+    /// F_X (inertial).
+    pub fx: f64,
+    /// F_Y (inertial).
+    pub fy: f64,
+    /// M about the centre.
+    pub moment: f64,
+}
+
+impl Loads {
+    /// Loads from a force given in BODY axes (x along the chord), rotated to inertial axes by θ
+    /// (SPEC §3: X = R(θ) x).
+    pub fn from_body_axes(theta: f64, fx_body: f64, fy_body: f64, moment: f64) -> Self {
+        let (fx, fy) = body_to_inertial(theta, fx_body, fy_body);
+        Self { fx, fy, moment }
+    }
+}
+
+/// Rotate a body-axes vector (x along the chord) to inertial axes: R(θ)(a, b) (SPEC §3).
+pub fn body_to_inertial(theta: f64, a: f64, b: f64) -> (f64, f64) {
+    let (s, c) = theta.sin_cos();
+    (c * a - s * b, s * a + c * b)
+}
+
+/// Rotate an inertial vector to body axes: Rᵀ(θ)(A, B) (SPEC §3, u = Rᵀ U).
+pub fn inertial_to_body(theta: f64, a: f64, b: f64) -> (f64, f64) {
+    let (s, c) = theta.sin_cos();
+    (c * a + s * b, -s * a + c * b)
+}
+
+/// Wrap an angle into (−π, π].
+pub fn wrap_angle(a: f64) -> f64 {
+    let r = a.rem_euclid(2.0 * PI); // [0, 2π]
+    if r > PI {
+        r - 2.0 * PI
+    } else {
+        r
+    }
+}
+
+impl BodyState {
+    /// The state as the integrator's vector (X, Y, θ, Ẋ, Ẏ, θ̇).
+    pub fn to_array(&self) -> [f64; 6] {
+        [self.x, self.y, self.theta, self.xdot, self.ydot, self.omega]
+    }
+
+    /// The state from the integrator's vector (X, Y, θ, Ẋ, Ẏ, θ̇).
+    pub fn from_array(v: [f64; 6]) -> Self {
+        let [x, y, theta, xdot, ydot, omega] = v;
+        Self {
+            x,
+            y,
+            theta,
+            xdot,
+            ydot,
+            omega,
+        }
+    }
+
+    /// Speed V = |(Ẋ, Ẏ)| (SPEC §6).
+    pub fn speed(&self) -> f64 {
+        self.xdot.hypot(self.ydot)
+    }
+
+    /// Flight-path angle γ = atan2(Ẏ, Ẋ) ∈ [−π, π] (SPEC §3, §6); 0 when V = 0.
+    pub fn flight_path_angle(&self) -> f64 {
+        self.ydot.atan2(self.xdot)
+    }
+
+    /// Angle of attack α = θ − γ wrapped into (−π, π] (SPEC §5, §6).
+    pub fn angle_of_attack(&self) -> f64 {
+        wrap_angle(self.theta - self.flight_path_angle())
+    }
+
+    /// Translation velocity of the centre in body axes, (ẋ₀cosθ + ẏ₀sinθ, −ẋ₀sinθ + ẏ₀cosθ)
+    /// (SPEC §3, the translation part of g), equal to (V cos α, −V sin α).
+    pub fn body_axes_velocity(&self) -> (f64, f64) {
+        inertial_to_body(self.theta, self.xdot, self.ydot)
+    }
+}
+
+/// Time derivative of (X, Y, θ, Ẋ, Ẏ, θ̇) under the Cartesian equations of SPEC §6:
+/// `Free`: (Ẋ, Ẏ, θ̇, F_X/m*, F_Y/m* − g*, M/I*); `PitchOnly`: (Ẋ, Ẏ, θ̇, 0, 0, M/I*);
+/// `Prescribed`: (Ẋ, Ẏ, θ̇, 0, 0, 0) (constant velocity; the real prescribed motion is the caller's).
+pub fn state_derivative(props: &PlateProps, dof: Dof, s: &BodyState, loads: &Loads) -> [f64; 6] {
+    let (ax, ay, alpha) = match dof {
+        Dof::Prescribed => (0.0, 0.0, 0.0),
+        Dof::PitchOnly => (0.0, 0.0, loads.moment / props.inertia),
+        Dof::Free => (
+            loads.fx / props.mass,
+            loads.fy / props.mass - props.gravity,
+            loads.moment / props.inertia,
+        ),
+    };
+    [s.xdot, s.ydot, s.omega, ax, ay, alpha]
+}
+
+/// One explicit coupling step t → t + h of the body (SPEC §6 coupling): with the loads of the
+/// current flow, the derivative of [`state_derivative`] goes to the Adams–Bashforth integrator,
+/// which advances `state`. For `Dof::Prescribed` nothing happens (the integrator is not fed).
+pub fn advance(
+    ab: &mut AdamsBashforth<6>,
+    props: &PlateProps,
+    dof: Dof,
+    t: f64,
+    state: &mut BodyState,
+    loads: &Loads,
+    h: f64,
+) {
+    if dof == Dof::Prescribed {
+        return;
+    }
+    let f = state_derivative(props, dof, state, loads);
+    let mut y = state.to_array();
+    ab.step(t, &mut y, f, h);
+    *state = BodyState::from_array(y);
+}
+
+/// The plate as a rigid body: properties, free degrees of freedom, state and its integrator.
+#[derive(Debug, Clone)]
+pub struct RigidBody {
+    /// Non-dimensional properties.
+    pub props: PlateProps,
+    /// Current state.
+    pub state: BodyState,
+    dof: Dof,
+    ab: AdamsBashforth<6>,
+}
+
+impl RigidBody {
+    /// A body with the given properties, freedom, initial state and AB order/start (SPEC §6).
+    pub fn new(
+        props: PlateProps,
+        dof: Dof,
+        state: BodyState,
+        order: usize,
+        start: AbStart,
+    ) -> Result<Self, AbError> {
+        Ok(Self {
+            props,
+            state,
+            dof,
+            ab: AdamsBashforth::new(order, start)?,
+        })
+    }
+
+    /// Current degrees of freedom.
+    pub fn dof(&self) -> Dof {
+        self.dof
+    }
+
+    /// Change the degrees of freedom (release) and reset the derivative history, which belonged
+    /// to the previous equations of motion.
+    pub fn set_dof(&mut self, dof: Dof) {
+        self.dof = dof;
+        self.ab.reset();
+    }
+
+    /// The integrator (e.g. to inspect its history).
+    pub fn integrator(&self) -> &AdamsBashforth<6> {
+        &self.ab
+    }
+
+    /// The integrator, mutably (e.g. to prime its history).
+    pub fn integrator_mut(&mut self) -> &mut AdamsBashforth<6> {
+        &mut self.ab
+    }
+
+    /// Derivative of the current state under `loads` ([`state_derivative`]).
+    pub fn derivative(&self, loads: &Loads) -> [f64; 6] {
+        state_derivative(&self.props, self.dof, &self.state, loads)
+    }
+
+    /// Advance t → t + h under the current loads ([`advance`]).
+    pub fn step(&mut self, t: f64, loads: &Loads, h: f64) {
+        advance(
+            &mut self.ab,
+            &self.props,
+            self.dof,
+            t,
+            &mut self.state,
+            loads,
+            h,
+        );
+    }
+}
