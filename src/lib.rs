@@ -13,3 +13,4 @@ pub mod sim;
 pub mod summary;
 pub mod bench;
 
+pub mod cli;
