@@ -13,7 +13,10 @@ use crate::grid::GridSpec;
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Case {
     /// A: translates at U to the right (+X) at a fixed angle of attack α, impulsively started.
-    Static { alpha: f64 },
+    /// During the first convective time the pitch is nudged by `kick`·sin²(πt) (smooth, zero at
+    /// both ends) so that a symmetric configuration (α = π/2) does not rely on round-off to break
+    /// its symmetry; afterwards α is exact.
+    Static { alpha: f64, kick: f64 },
     /// B: translates at U; θ spun up from 0 at constant angular acceleration over `spinup` convective
     /// times to the rate `rate`, then held.
     Forced { rate: f64, spinup: f64 },
@@ -101,7 +104,10 @@ impl RunConfig {
             check_range("--turns", n, 0.0, 1e4, true)?;
         }
         match self.case {
-            Case::Static { alpha } => check_range("--alpha (rad)", alpha, -PI, PI, false)?,
+            Case::Static { alpha, kick } => {
+                check_range("--alpha (rad)", alpha, -PI, PI, false)?;
+                check_range("--kick (rad)", kick.abs(), 0.0, 0.2, false)?;
+            }
             Case::Forced { rate, spinup } => {
                 check_range("--rate (θ̇ c/U)", rate.abs(), 0.0, 20.0, true)?;
                 check_range("--spinup", spinup, 0.0, 1e3, false)?;
@@ -136,7 +142,7 @@ impl RunConfig {
     /// A one-line description of the run.
     pub fn title(&self) -> String {
         let case = match &self.case {
-            Case::Static { alpha } => format!("static plate, α = {alpha:.4} rad"),
+            Case::Static { alpha, .. } => format!("static plate, α = {alpha:.4} rad"),
             Case::Forced { rate, spinup } => format!("forced rotation, θ̇ = {rate}, spin-up {spinup}"),
             Case::Pinned { alpha0, .. } => format!("pinned autorotation, released at α₀ = {alpha0}"),
             Case::Free { v0, gamma0, alpha0, .. } => {

@@ -2,6 +2,7 @@
 //! motion, the rigid-body step gives the next motion, and that motion sets the flow's boundary for
 //! the next flow step. Prescribed cases (and the development phase before a release) take the
 //! motion from a formula instead. No I/O: results go to an [`Observer`].
+use std::f64::consts::PI;
 use std::time::Instant;
 
 use crate::body::{inertial_to_body, wrap_angle, AbStart, BodyState, Dof, Loads as BodyLoads, RigidBody};
@@ -232,7 +233,7 @@ pub fn frame_of(s: &BodyState) -> Frame {
 
 /// The prescribed motion at time t: cases A and B, and the development phase of C and D.
 ///
-/// A: X = t, θ = α. B: X = t, θ̈ = R/T_s for t < T_s, then θ̇ = R. C: X = t, θ = α₀.
+/// A: X = t, θ = α (+ the start-up kick ε sin²(πt) for t < 1). B: X = t, θ̈ = R/T_s for t < T_s, then θ̇ = R. C: X = t, θ = α₀.
 /// D: moving at V₀ along γ₀ with θ = γ₀ + α₀.
 pub fn prescribed_state(case: &Case, t: f64) -> BodyState {
     let translate = |v: f64, gamma: f64, theta: f64, omega: f64| BodyState {
@@ -244,7 +245,15 @@ pub fn prescribed_state(case: &Case, t: f64) -> BodyState {
         omega,
     };
     match *case {
-        Case::Static { alpha } => translate(1.0, 0.0, alpha, 0.0),
+        Case::Static { alpha, kick } => {
+            let (theta, omega) = if t < 1.0 {
+                let s = (PI * t).sin();
+                (alpha + kick * s * s, kick * PI * (2.0 * PI * t).sin())
+            } else {
+                (alpha, 0.0)
+            };
+            translate(1.0, 0.0, theta, omega)
+        }
         Case::Forced { rate, spinup } => {
             let (theta, omega) = if t < spinup {
                 (0.5 * rate / spinup * t * t, rate * t / spinup)

@@ -128,7 +128,7 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord) -> Summary {
     let coupled = config.case.is_coupled();
     let moving = !matches!(config.case, Case::Static { .. });
     let (strouhal_chord, strouhal_width) = match (config.case.clone(), freq) {
-        (Case::Static { alpha }, Some(f)) => (Some(f), Some(f * alpha.sin().abs())),
+        (Case::Static { alpha, .. }, Some(f)) => (Some(f), Some(f * alpha.sin().abs())),
         _ => (None, None),
     };
     let mean_speed = if coupled { mean(|x| x.speed) } else { None };
@@ -201,7 +201,7 @@ pub fn report(config: &RunConfig, sum: &Summary) -> String {
     ));
     let mut table: Vec<(String, String, String)> = Vec::new();
     match config.case {
-        Case::Static { alpha } => {
+        Case::Static { alpha, .. } => {
             r.push_str(&format!(
                 "Strouhal: {} on the chord, {} on the projected width\n",
                 fmt_opt(sum.strouhal_chord, 3),

@@ -24,6 +24,9 @@ use super::options::RecordOptions;
 
 /// Messages queued for a --connect viewer before further ones are dropped.
 const CONNECT_QUEUE: usize = 512;
+/// Messages Rerun's gRPC client queues before `send` blocks (its channel holds 100); we hand it
+/// fewer while no viewer is connected.
+const CLIENT_QUEUE: usize = 90;
 /// Longest a flush waits for the --connect viewer.
 const CONNECT_FLUSH_LIMIT: Duration = Duration::from_secs(3);
 /// Longest the end of the run waits for the --connect forwarder to hand over its queue.
@@ -62,14 +65,33 @@ impl DetachedGrpcSink {
             .name("platefall-connect".into())
             .spawn(move || {
                 let sink = GrpcSink::new(uri);
+                // Messages handed to the client while no viewer is connected: the client queues
+                // CLIENT_QUEUE of them and then blocks, so stop short of that until it connects.
+                let mut unconnected = 0usize;
                 for cmd in rx {
                     match cmd {
-                        Cmd::Msg(msg) => {
-                            sink.send(msg);
-                            st.sent.fetch_add(1, Ordering::Relaxed);
-                        }
+                        Cmd::Msg(msg) => match sink.status() {
+                            GrpcSinkConnectionState::Connected => {
+                                unconnected = 0;
+                                sink.send(msg);
+                                st.sent.fetch_add(1, Ordering::Relaxed);
+                            }
+                            GrpcSinkConnectionState::Connecting { .. }
+                                if unconnected < CLIENT_QUEUE =>
+                            {
+                                unconnected += 1;
+                                sink.send(msg);
+                                st.sent.fetch_add(1, Ordering::Relaxed);
+                            }
+                            _ => {
+                                st.dropped.fetch_add(1, Ordering::Relaxed);
+                            }
+                        },
                         Cmd::Flush(ack) => {
-                            let _ = sink.flush_blocking(CONNECT_FLUSH_LIMIT);
+                            // Only wait for a viewer that is actually there.
+                            if sink.status() == GrpcSinkConnectionState::Connected {
+                                let _ = sink.flush_blocking(CONNECT_FLUSH_LIMIT);
+                            }
                             let _ = ack.send(());
                         }
                     }
