@@ -1,0 +1,266 @@
+//! Shared helpers for the `record_*` tests: a synthetic grid, run, flow, and an .rrd reader.
+#![allow(dead_code)]
+
+use std::collections::HashMap;
+use std::io::BufReader;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use platefall::record::messages::{FieldSnapshot, GridGeometry, RunInfo, StepSample};
+use rerun::external::re_log_encoding::DecoderApp;
+use rerun::log::{Chunk, LogMsg};
+
+/// A fresh temporary directory for one test.
+pub fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("platefall-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// A stretched grid over [-4, 6] × [-5, 5] (sinh clustering at the plate), `nx × ny` cells,
+/// with the plate [-0.5, 0.5] × [-t/2, t/2] solid.
+pub fn grid(nx: usize, ny: usize, thickness: f64) -> GridGeometry {
+    let stretch = |n: usize, lo: f64, hi: f64, mid: f64| -> Vec<f64> {
+        (0..=n)
+            .map(|i| {
+                let s = i as f64 / n as f64;
+                // map [0,1] → [lo, hi], clustered at `mid`
+                let a = ((mid - lo) / (hi - lo)).clamp(0.05, 0.95);
+                let k = 2.5;
+                let f = |s: f64| (k * (s - a)).sinh();
+                let t = (f(s) - f(0.0)) / (f(1.0) - f(0.0));
+                lo + (hi - lo) * t
+            })
+            .collect()
+    };
+    let xn = stretch(nx, -4.0, 6.0, 0.0);
+    let yn = stretch(ny, -5.0, 5.0, 0.0);
+    let mut solid = vec![false; nx * ny];
+    for j in 0..ny {
+        for i in 0..nx {
+            let (xc, yc) = (0.5 * (xn[i] + xn[i + 1]), 0.5 * (yn[j] + yn[j + 1]));
+            solid[i + nx * j] =
+                xc.abs() < 0.5 && yc.abs() < thickness.max(0.5 * (yn[j + 1] - yn[j]));
+        }
+    }
+    GridGeometry { xn, yn, solid }
+}
+
+pub fn run_info(grid: GridGeometry) -> RunInfo {
+    RunInfo {
+        case: "free".into(),
+        title: "synthetic free fall (test)".into(),
+        config_json: "{\n  \"case\": \"free\",\n  \"re\": 4770\n}".into(),
+        command_line: "platefall free --synthetic".into(),
+        version: "0.1.0-test".into(),
+        thickness: 0.0625,
+        grid: Arc::new(grid),
+    }
+}
+
+/// A tumbling fall: the centre drifts right and down, θ grows at ~1.6 per time unit.
+pub fn sample(step: u64, dt: f64) -> StepSample {
+    let t = step as f64 * dt;
+    let theta = 1.6 * t + 0.3 * (2.0 * t).sin();
+    let omega = 1.6 + 0.6 * (2.0 * t).cos();
+    let (xdot, ydot) = (0.8 + 0.3 * (3.2 * t).sin(), -0.6 + 0.2 * (3.2 * t).cos());
+    let x = 0.8 * t - 0.3 / 3.2 * ((3.2 * t).cos() - 1.0);
+    let y = -0.6 * t + 0.2 / 3.2 * (3.2 * t).sin();
+    let gamma = ydot.atan2(xdot);
+    let mut alpha = theta - gamma;
+    while alpha > std::f64::consts::PI {
+        alpha -= 2.0 * std::f64::consts::PI;
+    }
+    while alpha <= -std::f64::consts::PI {
+        alpha += 2.0 * std::f64::consts::PI;
+    }
+    StepSample {
+        step,
+        t,
+        dt,
+        cl: 1.2 * (2.0 * alpha).sin() + 0.5 * omega,
+        cd: 1.0 + 0.8 * (1.0 - (2.0 * alpha).cos()),
+        cm: -0.2 * (2.0 * alpha).sin(),
+        x,
+        y,
+        theta,
+        xdot,
+        ydot,
+        omega,
+        speed: xdot.hypot(ydot),
+        gamma,
+        alpha,
+    }
+}
+
+/// A synthetic flow for `s` on `grid`: a regularised vortex street in body coordinates, built
+/// from a stream function so the MAC field is exactly divergence-free.
+pub fn snapshot(grid: &GridGeometry, s: &StepSample) -> FieldSnapshot {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let t = s.t;
+    let vortices: Vec<(f64, f64, f64)> = (0..6)
+        .map(|k| {
+            let x0 = 0.7 + 0.7 * k as f64 + 0.35 * (t % 2.0);
+            let y0 = if k % 2 == 0 { 0.35 } else { -0.35 };
+            let g = if k % 2 == 0 { 2.5 } else { -2.5 };
+            (x0, y0, g)
+        })
+        .collect();
+    let psi = |x: f64, y: f64| -> f64 {
+        vortices
+            .iter()
+            .map(|&(x0, y0, g)| {
+                let r2 = (x - x0).powi(2) + (y - y0).powi(2);
+                -g / (4.0 * std::f64::consts::PI) * (r2 + 0.04).ln()
+            })
+            .sum()
+    };
+    let mut u = vec![0.0; (nx + 1) * ny];
+    let mut v = vec![0.0; nx * (ny + 1)];
+    for j in 0..ny {
+        for i in 0..=nx {
+            let (x, y0, y1) = (grid.xn[i], grid.yn[j], grid.yn[j + 1]);
+            u[i + (nx + 1) * j] = (psi(x, y1) - psi(x, y0)) / (y1 - y0);
+        }
+    }
+    for j in 0..=ny {
+        for i in 0..nx {
+            let (y, x0, x1) = (grid.yn[j], grid.xn[i], grid.xn[i + 1]);
+            v[i + nx * j] = -(psi(x1, y) - psi(x0, y)) / (x1 - x0);
+        }
+    }
+    let mut p = vec![0.0; nx * ny];
+    for j in 0..ny {
+        for i in 0..nx {
+            let uc = 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
+            let vc = 0.5 * (v[i + nx * j] + v[i + nx * (j + 1)]);
+            p[i + nx * j] = -0.5 * (uc * uc + vc * vc);
+        }
+    }
+    let (c, sn) = (s.theta.cos(), s.theta.sin());
+    FieldSnapshot {
+        step: s.step,
+        t: s.t,
+        x: s.x,
+        y: s.y,
+        theta: s.theta,
+        gx0: s.xdot * c + s.ydot * sn,
+        gy0: -s.xdot * sn + s.ydot * c,
+        omega: s.omega,
+        u,
+        v,
+        p,
+    }
+}
+
+/// What an .rrd holds, as read back with Rerun's own decoder.
+#[derive(Debug, Default)]
+pub struct Decoded {
+    /// Temporal rows per entity path.
+    pub rows: HashMap<String, usize>,
+    /// Entities with static data.
+    pub statics: Vec<String>,
+    /// Recording chunks (not the blueprint's).
+    pub chunks: Vec<Chunk>,
+    pub has_blueprint: bool,
+    /// True if the file ends with a footer (RRD manifest): the sink was finalised.
+    pub has_footer: bool,
+    pub timelines: Vec<String>,
+}
+
+impl Decoded {
+    pub fn rows(&self, path: &str) -> usize {
+        self.rows.get(path).copied().unwrap_or(0)
+    }
+
+    /// All text of Text components logged at `path` (TextDocument / TextLog).
+    pub fn texts(&self, path: &str) -> Vec<String> {
+        let text_id = rerun::TextDocument::descriptor_text().component;
+        let log_id = rerun::TextLog::descriptor_text().component;
+        let mut out = Vec::new();
+        for c in self
+            .chunks
+            .iter()
+            .filter(|c| c.entity_path().to_string() == path)
+        {
+            for id in [text_id, log_id] {
+                for batch in c.iter_component::<rerun::components::Text>(id) {
+                    out.extend(batch.iter().map(|t| t.as_str().to_string()));
+                }
+            }
+        }
+        out
+    }
+
+    /// All scalar values logged at `path`, in chunk order.
+    pub fn scalars(&self, path: &str) -> Vec<f64> {
+        let id = rerun::Scalars::descriptor_scalars().component;
+        let mut out = Vec::new();
+        for c in self
+            .chunks
+            .iter()
+            .filter(|c| c.entity_path().to_string() == path)
+        {
+            for batch in c.iter_component::<rerun::components::Scalar>(id) {
+                out.extend(batch.iter().map(|s| s.0 .0));
+            }
+        }
+        out
+    }
+
+    pub fn entities_under(&self, prefix: &str) -> Vec<String> {
+        let mut v: Vec<String> = self
+            .rows
+            .keys()
+            .chain(self.statics.iter())
+            .filter(|p| p.starts_with(prefix))
+            .cloned()
+            .collect();
+        v.sort();
+        v.dedup();
+        v
+    }
+}
+
+pub fn decode(path: &Path) -> Decoded {
+    let file = std::fs::File::open(path).expect("open rrd");
+    let mut it = DecoderApp::decode_lazy(BufReader::new(file));
+    let mut d = Decoded::default();
+    for msg in &mut it {
+        let msg = msg.expect("decode rrd");
+        match msg {
+            LogMsg::ArrowMsg(store_id, arrow) => {
+                if store_id.kind() != rerun::StoreKind::Recording {
+                    d.has_blueprint = true;
+                    continue;
+                }
+                let chunk = Chunk::from_arrow_msg(&arrow).expect("chunk");
+                let path = chunk.entity_path().to_string();
+                if chunk.is_static() {
+                    d.statics.push(path);
+                } else {
+                    *d.rows.entry(path).or_default() += chunk.num_rows();
+                    for name in chunk.timelines().keys() {
+                        let n = name.to_string();
+                        if !d.timelines.contains(&n) {
+                            d.timelines.push(n);
+                        }
+                    }
+                }
+                d.chunks.push(chunk);
+            }
+            LogMsg::SetStoreInfo(_) | LogMsg::BlueprintActivationCommand(_) => {}
+        }
+    }
+    d.has_footer = !it.rrd_manifests().expect("manifests").is_empty();
+    d
+}
+
+/// `rerun` CLI from the venv of the brief, if present (for the optional outside checks).
+pub fn rerun_cli() -> Option<PathBuf> {
+    ["/tmp/rrvenv/bin/rerun", "/tmp/rrview/venv/bin/rerun"]
+        .iter()
+        .map(PathBuf::from)
+        .find(|p| p.exists())
+}

@@ -1,0 +1,418 @@
+//! The logger end to end: synthetic messages → spawn_logger → .rrd → decoded back with Rerun's
+//! own decoder (`re_log_encoding::DecoderApp`, reachable as `rerun::external::re_log_encoding`).
+mod record_common;
+
+use std::time::{Duration, Instant};
+
+use platefall::record::messages::{RunOutcome, RunStatus};
+use platefall::record::{paths, spawn_logger, RecordOptions, CSV_HEADER};
+use record_common::*;
+
+fn outcome(status: RunStatus) -> RunOutcome {
+    RunOutcome {
+        status,
+        summary_json: "{\n  \"mean_speed\": 1.0\n}".into(),
+        report: "synthetic report".into(),
+    }
+}
+
+/// Runs `steps` synthetic steps through a logger with `opts`, offering a field whenever due.
+/// Returns (fields accepted, fields due).
+fn drive(
+    logger: &mut platefall::record::Logger,
+    g: &platefall::record::messages::GridGeometry,
+    steps: u64,
+    dt: f64,
+) -> (u64, u64) {
+    let (mut accepted, mut due) = (0, 0);
+    for k in 1..=steps {
+        let s = sample(k, dt);
+        logger.step(s).unwrap();
+        if logger.field_due(s.t) {
+            due += 1;
+            if logger.offer_field(snapshot(g, &s)) {
+                accepted += 1;
+            }
+        }
+    }
+    (accepted, due)
+}
+
+#[test]
+fn full_run_round_trips_through_the_rrd_file() {
+    let dir = temp_dir("roundtrip");
+    let rrd = dir.join("run.rrd");
+    let csv = dir.join("run.csv");
+    let g = grid(40, 30, 0.0625);
+    let info = run_info(g.clone());
+    let opts = RecordOptions {
+        csv: Some(csv.clone()),
+        t_end: 2.0,
+        field_every: 0.1,
+        // The synthetic "solver" is far faster than the painter; let every snapshot queue up.
+        max_fields_in_flight: 64,
+        ..RecordOptions::to_file(&rrd)
+    };
+    let mut logger = spawn_logger(opts, info).unwrap();
+    assert_eq!(logger.field_every(), 0.1);
+    // 200 steps of 0.01 → t in (0, 2]: snapshots due at 0.01 (the first), 0.1, 0.2, …, 2.0.
+    let (accepted, due) = drive(&mut logger, &g, 200, 0.01);
+    assert_eq!(due, 21, "field cadence");
+    let report = logger.finish(outcome(RunStatus::Completed)).unwrap();
+    assert_eq!(report.steps, 200);
+    assert_eq!(report.fields_logged + report.fields_skipped, due);
+    assert_eq!(report.fields_logged, accepted);
+    assert_eq!(accepted, due);
+    let (path, bytes) = report.rrd.clone().expect("rrd in report");
+    assert_eq!(path, rrd);
+    assert!(bytes > 10_000, "{bytes}");
+    assert!(!report.is_serving());
+
+    let d = decode(&rrd);
+    assert!(d.has_footer, "file sink finalised (footer present)");
+    assert!(d.has_blueprint, "blueprint sent");
+    for tl in ["step", "time"] {
+        assert!(
+            d.timelines.iter().any(|t| t == tl),
+            "timeline {tl}: {:?}",
+            d.timelines
+        );
+    }
+    assert!(
+        !d.timelines.iter().any(|t| t == "log_time"),
+        "{:?}",
+        d.timelines
+    );
+    // Every step, every series.
+    for p in [
+        "/coefficients/cl",
+        "/coefficients/cd",
+        "/coefficients/cm",
+        "/motion/speed",
+        "/motion/omega",
+        "/motion/gamma",
+        "/motion/alpha",
+        "/solver/dt",
+        paths::PLATE,
+        paths::FOLLOW,
+    ] {
+        assert_eq!(d.rows(p), 200, "{p}");
+    }
+    let cl = d.scalars("/coefficients/cl");
+    assert_eq!(cl.len(), 200);
+    assert!((cl[41] - sample(42, 0.01).cl).abs() < 1e-12);
+    // Every accepted snapshot: three images, streamlines, the skipped counter.
+    for f in ["vorticity", "pressure", "speed"] {
+        assert_eq!(
+            d.rows(&format!("{}/{f}", paths::PLATE)),
+            accepted as usize,
+            "{f}"
+        );
+    }
+    assert_eq!(d.rows(paths::STREAMLINES), accepted as usize);
+    assert_eq!(d.rows(paths::SKIPPED_FIELDS), accepted as usize);
+    // Static parts and growing curves.
+    for p in [
+        paths::OUTLINE,
+        paths::CONFIG,
+        paths::SUMMARY,
+        paths::WORLD_SCREEN,
+        paths::POLAR_SCREEN,
+    ] {
+        assert!(d.statics.iter().any(|s| s == p), "static {p}");
+    }
+    assert!(!d
+        .entities_under(&format!("{}/", paths::TRAJECTORY))
+        .is_empty());
+    assert!(!d.entities_under(&format!("{}/", paths::STROBE)).is_empty());
+    assert_eq!(
+        d.entities_under(&format!("{}/", paths::POLAR_COEFFICIENTS))
+            .len(),
+        3
+    );
+    // 2 time units at 0.5 per outline → 5 outlines (t = 0.01, 0.5, 1.0, 1.5, 2.0).
+    let config = d.texts(paths::CONFIG).join("\n");
+    assert!(config.contains("platefall free --synthetic"), "{config}");
+    assert!(config.contains("\"re\": 4770"), "{config}");
+    assert!(config.contains("0.1.0-test"));
+    let summary = d.texts(paths::SUMMARY).join("\n");
+    assert!(summary.contains("completed"), "{summary}");
+    assert!(summary.contains("mean_speed"));
+    assert!(
+        summary.contains("skipped because the logger fell behind: 0"),
+        "{summary}"
+    );
+    let status = d.texts(paths::STATUS);
+    assert!(status.first().unwrap().starts_with("started"), "{status:?}");
+    assert_eq!(status.last().unwrap(), "completed");
+
+    // CSV: header + one line per step.
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], CSV_HEADER);
+    assert_eq!(lines.len(), 201);
+    let row: Vec<f64> = lines[42].split(',').map(|x| x.parse().unwrap()).collect();
+    let s = sample(42, 0.01);
+    assert_eq!(row.len(), 15);
+    assert_eq!(row[0], s.t);
+    assert_eq!(row[1], 42.0);
+    assert_eq!(row[3], s.cl);
+    assert_eq!(row[14], s.alpha);
+    assert_eq!(report.csv, Some((csv, 200)));
+
+    // From outside, if the rerun CLI of the brief is installed.
+    if let Some(cli) = rerun_cli() {
+        let out = std::process::Command::new(cli)
+            .args(["rrd", "verify"])
+            .arg(&rrd)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "rerun rrd verify: {}{}",
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn snapshots_offered_to_a_busy_logger_are_skipped_and_reported() {
+    let dir = temp_dir("skip");
+    let rrd = dir.join("skip.rrd");
+    let g = grid(40, 30, 0.0625);
+    let opts = RecordOptions {
+        max_fields_in_flight: 2,
+        ..RecordOptions::to_file(&rrd)
+    };
+    let logger = spawn_logger(opts, run_info(g.clone())).unwrap();
+    let s = sample(1, 0.01);
+    logger.step(s).unwrap();
+    {
+        let _pause = logger.pause();
+        assert!(logger.offer_field(snapshot(&g, &s)));
+        assert!(logger.offer_field(snapshot(&g, &s)));
+        // Two in flight: the next ones are refused at once, without blocking.
+        let t0 = Instant::now();
+        assert!(!logger.offer_field(snapshot(&g, &s)));
+        assert!(!logger.offer_field(snapshot(&g, &s)));
+        assert!(t0.elapsed() < Duration::from_millis(500));
+        assert_eq!(logger.skipped_fields(), 2);
+    }
+    let s2 = sample(2, 0.01);
+    logger.step(s2).unwrap();
+    // After the logger caught up, snapshots are accepted again.
+    let t0 = Instant::now();
+    while !logger.offer_field(snapshot(&g, &s2)) {
+        assert!(
+            t0.elapsed() < Duration::from_secs(20),
+            "logger never caught up"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    let report = logger.finish(outcome(RunStatus::Completed)).unwrap();
+    assert!(report.fields_skipped >= 2);
+    assert_eq!(report.fields_logged, 3 + (report.fields_skipped - 2) * 0);
+    assert!(
+        report.lines()[0].contains("skipped"),
+        "{:?}",
+        report.lines()
+    );
+
+    let d = decode(&rrd);
+    assert!(d.has_footer);
+    let skipped = d.scalars(paths::SKIPPED_FIELDS);
+    assert_eq!(skipped.last().copied(), Some(report.fields_skipped as f64));
+    let summary = d.texts(paths::SUMMARY).join("\n");
+    assert!(
+        summary.contains(&format!(
+            "skipped because the logger fell behind: {}",
+            report.fields_skipped
+        )),
+        "{summary}"
+    );
+    assert!(d.texts(paths::STATUS).iter().any(|l| l.contains("skipped")));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn interrupted_and_abandoned_runs_still_give_finalised_files() {
+    let dir = temp_dir("interrupt");
+    let g = grid(24, 20, 0.0625);
+
+    // Ctrl-C: finish with Interrupted.
+    let rrd = dir.join("interrupted.rrd");
+    let mut logger = spawn_logger(RecordOptions::to_file(&rrd), run_info(g.clone())).unwrap();
+    drive(&mut logger, &g, 50, 0.01);
+    let report = logger.finish(outcome(RunStatus::Interrupted)).unwrap();
+    assert_eq!(report.steps, 50);
+    let d = decode(&rrd);
+    assert!(d.has_footer);
+    assert_eq!(d.rows("/coefficients/cl"), 50);
+    assert!(d
+        .texts(paths::STATUS)
+        .last()
+        .unwrap()
+        .contains("interrupted"));
+
+    // Diverged.
+    let rrd = dir.join("diverged.rrd");
+    let mut logger = spawn_logger(RecordOptions::to_file(&rrd), run_info(g.clone())).unwrap();
+    drive(&mut logger, &g, 30, 0.01);
+    logger
+        .finish(outcome(RunStatus::Diverged("NaN in u at step 30".into())))
+        .unwrap();
+    let d = decode(&rrd);
+    assert!(d.has_footer);
+    assert!(d
+        .texts(paths::STATUS)
+        .last()
+        .unwrap()
+        .contains("NaN in u at step 30"));
+
+    // The solver errors out and drops the logger without finish().
+    let rrd = dir.join("dropped.rrd");
+    {
+        let mut logger = spawn_logger(RecordOptions::to_file(&rrd), run_info(g.clone())).unwrap();
+        drive(&mut logger, &g, 20, 0.01);
+    }
+    let d = decode(&rrd);
+    assert!(d.has_footer);
+    assert_eq!(d.rows("/coefficients/cl"), 20);
+    assert!(d
+        .texts(paths::STATUS)
+        .last()
+        .unwrap()
+        .contains("interrupted"));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn connect_to_nothing_never_stalls_the_run_or_the_file() {
+    let dir = temp_dir("connect");
+    let rrd = dir.join("connect.rrd");
+    let port = std::net::TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port();
+    let g = grid(40, 30, 0.0625);
+    let opts = RecordOptions {
+        connect: Some(format!("rerun+http://127.0.0.1:{port}/proxy")),
+        field_every: 0.05,
+        ..RecordOptions::to_file(&rrd)
+    };
+    let t0 = Instant::now();
+    let mut logger = spawn_logger(opts, run_info(g.clone())).unwrap();
+    let (accepted, _) = drive(&mut logger, &g, 3000, 0.01);
+    let run_time = t0.elapsed();
+    let report = logger.finish(outcome(RunStatus::Completed)).unwrap();
+    let total = t0.elapsed();
+    assert!(
+        total < Duration::from_secs(60),
+        "run {run_time:?}, total {total:?}"
+    );
+    let c = report.connect.clone().expect("connect report");
+    assert!(!c.ever_connected);
+    assert!(
+        report
+            .notes
+            .iter()
+            .any(|n| n.contains("no viewer was reachable")),
+        "{:?}",
+        report.notes
+    );
+    let d = decode(&rrd);
+    assert!(d.has_footer);
+    assert_eq!(d.rows("/coefficients/cl"), 3000);
+    assert_eq!(
+        d.rows(&format!("{}/vorticity", paths::PLATE)),
+        accepted as usize
+    );
+    eprintln!(
+        "connect to nothing: run {run_time:?}, finish {:?}, {c:?}",
+        total - run_time
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn csv_only_run_needs_no_rerun_sink() {
+    let dir = temp_dir("csvonly");
+    let csv = dir.join("only.csv");
+    let g = grid(16, 12, 0.0625);
+    let opts = RecordOptions {
+        csv: Some(csv.clone()),
+        ..RecordOptions::default()
+    };
+    let mut logger = spawn_logger(opts, run_info(g.clone())).unwrap();
+    drive(&mut logger, &g, 10, 0.01);
+    let report = logger.finish(outcome(RunStatus::Completed)).unwrap();
+    assert!(report.rrd.is_none());
+    assert_eq!(std::fs::read_to_string(&csv).unwrap().lines().count(), 11);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn connect_to_a_viewer_that_goes_away_mid_run() {
+    let dir = temp_dir("connect-away");
+    let rrd = dir.join("away.rrd");
+    let port = std::net::TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port();
+    // A stand-in viewer: Rerun's own gRPC message proxy, the server a viewer runs.
+    let viewer = rerun::RecordingStreamBuilder::new("stand_in_viewer")
+        .serve_grpc_opts("127.0.0.1", port, rerun::ServerOptions::default())
+        .unwrap();
+    std::thread::sleep(Duration::from_millis(300));
+    let g = grid(40, 30, 0.0625);
+    let opts = RecordOptions {
+        connect: Some(format!("rerun+http://127.0.0.1:{port}/proxy")),
+        field_every: 0.05,
+        ..RecordOptions::to_file(&rrd)
+    };
+    let t0 = Instant::now();
+    let mut logger = spawn_logger(opts, run_info(g.clone())).unwrap();
+    let mut accepted = 0;
+    for k in 1..=3000u64 {
+        let s = sample(k, 0.01);
+        logger.step(s).unwrap();
+        if logger.field_due(s.t) && logger.offer_field(snapshot(&g, &s)) {
+            accepted += 1;
+        }
+        if k % 500 == 0 {
+            std::thread::sleep(Duration::from_millis(300));
+        }
+        if k == 1500 {
+            drop(viewer.clone());
+            viewer.disconnect(); // shuts the stand-in's server down: the viewer went away
+            std::thread::sleep(Duration::from_millis(300));
+            assert!(
+                std::net::TcpStream::connect(("127.0.0.1", port)).is_err(),
+                "stand-in viewer still listening"
+            );
+        }
+    }
+    let run_time = t0.elapsed();
+    let report = logger.finish(outcome(RunStatus::Completed)).unwrap();
+    let total = t0.elapsed();
+    let c = report.connect.clone().unwrap();
+    eprintln!(
+        "viewer went away: run {run_time:?}, finish {:?}, {c:?}",
+        total - run_time
+    );
+    assert!(c.ever_connected, "{c:?}");
+    assert!(total - run_time < Duration::from_secs(15));
+    let d = decode(&rrd);
+    assert!(d.has_footer);
+    assert_eq!(d.rows("/coefficients/cl"), 3000);
+    assert_eq!(
+        d.rows(&format!("{}/vorticity", paths::PLATE)),
+        accepted as usize
+    );
+    drop(viewer);
+    let _ = std::fs::remove_dir_all(&dir);
+}
