@@ -42,9 +42,12 @@ pub struct FlowParams {
 
 impl Default for FlowParams {
     fn default() -> Self {
-        FlowParams { re: 5000.0, cfl: 0.4, visc_safety: 0.8 }
+        FlowParams { re: 5000.0, cfl: 0.5, visc_safety: 0.8 }
     }
 }
+
+/// Velocities beyond this multiple of (1 + V + |θ̇|) mean the solution has blown up.
+pub const BLOWUP_FACTOR: f64 = 25.0;
 
 /// A body force (x, y, t) ↦ (f_x, f_y) added to the momentum equations (for manufactured solutions).
 pub type ForceFn = Box<dyn Fn(f64, f64, f64) -> (f64, f64) + Send + Sync>;
@@ -164,7 +167,8 @@ impl FlowSolver {
     pub fn prepare(&mut self) -> Result<f64, FlowError> {
         boundary::fill_ghosts(&mut self.u, &mut self.v, &self.metrics, &self.frame, &self.outer, self.t);
         let nu = 1.0 / self.params.re;
-        self.rate = momentum::explicit_rhs(&self.u, &self.v, &self.metrics, &self.frame, nu, &mut self.hu, &mut self.hv);
+        let stats = momentum::explicit_rhs(&self.u, &self.v, &self.metrics, &self.frame, nu, &mut self.hu, &mut self.hv);
+        self.rate = stats.rate;
         plate::apply_wall_faces(
             &self.wall_u,
             &self.wall_v,
@@ -178,8 +182,15 @@ impl FlowSolver {
         if let Some(f) = &self.forcing {
             add_forcing(f, &self.metrics, self.t, &mut self.hu, &mut self.hv);
         }
-        if !self.rate.is_finite() || self.rate > 1e8 {
-            return Err(self.diverged("the convective rate is not finite"));
+        // Fluid velocities are bounded by a few times the plate's own speeds; far beyond that the
+        // explicit scheme has gone unstable.
+        let f = &self.frame;
+        let bound = BLOWUP_FACTOR * (1.0 + f.a.hypot(f.b) + f.omega.abs());
+        if !(stats.max_speed <= bound) || !self.rate.is_finite() {
+            return Err(self.diverged(&format!(
+                "the largest velocity {:.3e} exceeds {bound:.1} = {BLOWUP_FACTOR} × (1 + V + |θ̇|)",
+                stats.max_speed
+            )));
         }
         self.prepared = true;
         let dt_conv = if self.rate > 0.0 { self.params.cfl / self.rate } else { f64::INFINITY };

@@ -51,8 +51,16 @@ pub fn face_value(far: f64, up: f64, down: f64) -> f64 {
     up + 0.5 * a.copysign(dd)
 }
 
-/// Computes H_u and H_v on every interior face (boundary and plate faces are overwritten later)
-/// and returns the largest convective rate max(|w_x|/Δx + |w_y|/Δy) seen (for the CFL limit).
+/// What one evaluation of the right-hand side saw, for the time-step limit and blow-up detection.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RhsStats {
+    /// Largest convective rate max(|w_x|/Δx + |w_y|/Δy) (for the CFL limit).
+    pub rate: f64,
+    /// Largest inertial velocity component |u|, |v| (NaN if any is NaN).
+    pub max_speed: f64,
+}
+
+/// Computes H_u and H_v on every interior face (boundary and plate faces are overwritten later).
 pub fn explicit_rhs(
     u: &Padded,
     v: &Padded,
@@ -61,10 +69,11 @@ pub fn explicit_rhs(
     nu: f64,
     hu: &mut Padded,
     hv: &mut Padded,
-) -> f64 {
+) -> RhsStats {
     let nx = v.ni as isize;
     let ny = u.nj as isize;
     let mut max_rate: f64 = 0.0;
+    let mut max_speed: f64 = 0.0;
     let om = frame.omega;
 
     // ---- u-momentum on vertical faces i = 1..nx−1, rows j = 0..ny−1.
@@ -100,6 +109,10 @@ pub fn explicit_rhs(
             hu.set(i, j, -conv + nu * diff + rot);
             let rate = (up - gx).abs() * cvx + 0.5 * (wn.abs() + ws.abs()) * cvy;
             max_rate = max_rate.max(rate);
+            max_speed = max_speed.max(up.abs());
+            if up.is_nan() {
+                max_speed = f64::NAN;
+            }
         }
     }
 
@@ -135,11 +148,11 @@ pub fn explicit_rhs(
             hv.set(i, j, -conv + nu * diff + rot);
             let rate = (vp - gy).abs() * cvy + 0.5 * (we.abs() + ww.abs()) * cvx;
             max_rate = max_rate.max(rate);
+            max_speed = max_speed.max(vp.abs());
+            if vp.is_nan() {
+                max_speed = f64::NAN;
+            }
         }
     }
-    if max_rate.is_nan() {
-        f64::NAN
-    } else {
-        max_rate
-    }
+    RhsStats { rate: max_rate, max_speed }
 }

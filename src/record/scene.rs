@@ -239,13 +239,23 @@ pub(crate) fn f32_to_f16_bits(x: f32) -> u16 {
     h
 }
 
-fn f16_bytes(values: &[f32]) -> Vec<u8> {
+/// Half-precision bytes of `values`, rounded to multiples of `quantum` first (so that the
+/// colour scale's resolution is kept and near-uniform regions become runs LZ4 can compress).
+fn f16_bytes(values: &[f32], quantum: f32) -> Vec<u8> {
     let mut out = Vec::with_capacity(values.len() * 2);
     for &v in values {
-        out.extend_from_slice(&f32_to_f16_bits(v).to_le_bytes());
+        let q = if quantum > 0.0 && v.is_finite() {
+            (v / quantum).round() * quantum
+        } else {
+            v
+        };
+        out.extend_from_slice(&f32_to_f16_bits(q).to_le_bytes());
     }
     out
 }
+
+/// Colour-scale steps kept in the images: (upper − lower) / IMAGE_LEVELS.
+const IMAGE_LEVELS: f64 = 4096.0;
 
 /// All logging state of one run.
 pub(crate) struct Scene {
@@ -603,14 +613,18 @@ impl Scene {
         self.set_time(snap.step, snap.t);
         let img = self.image;
         let size = [img.width as u32, img.height as u32];
-        for (name, data) in [
-            ("vorticity", &painted.vorticity),
-            ("pressure", &painted.pressure),
-            ("speed", &painted.speed),
-        ] {
+        for (data, (name, _, lo, hi)) in [&painted.vorticity, &painted.pressure, &painted.speed]
+            .into_iter()
+            .zip(FIELD_SCALES)
+        {
+            let quantum = ((hi - lo) / IMAGE_LEVELS) as f32;
             self.rec.log(
                 format!("{}/{name}", paths::PLATE),
-                &DepthImage::from_data_type_and_bytes(f16_bytes(data), size, ChannelDatatype::F16),
+                &DepthImage::from_data_type_and_bytes(
+                    f16_bytes(data, quantum),
+                    size,
+                    ChannelDatatype::F16,
+                ),
             )?;
         }
         let strips = painted
