@@ -39,13 +39,13 @@ pub enum Command {
 #[derive(Args, Debug, Clone)]
 pub struct SolverArgs {
     /// Reynolds number U c / ν [default: 5000, or the preset's for pinned/free].
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub re: Option<f64>,
     /// Cells per chord N (h = c/N). The seed used 16.
     #[arg(long, default_value_t = 32)]
     pub resolution: usize,
     /// End time in convective times c/U from the impulsive start [default depends on the case].
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub t_end: Option<f64>,
     /// Write the run summary as JSON to this file.
     #[arg(long, value_name = "FILE")]
@@ -55,23 +55,23 @@ pub struct SolverArgs {
     #[arg(long)]
     pub seed_grid: bool,
     /// Plate thickness as a chord fraction (rounded to whole cells, at least one).
-    #[arg(long, default_value_t = 1.0 / 16.0)]
+    #[arg(long, default_value_t = 1.0 / 16.0, allow_negative_numbers = true)]
     pub thickness: f64,
     /// Distance from the plate to the outer boundary, in chords.
-    #[arg(long, default_value_t = 15.0)]
+    #[arg(long, default_value_t = 15.0, allow_negative_numbers = true)]
     pub extent: f64,
     /// Cap on the ratio of neighbouring cell sizes in the stretched region.
-    #[arg(long, default_value_t = 1.045)]
+    #[arg(long, default_value_t = 1.045, allow_negative_numbers = true)]
     pub growth: f64,
     /// Courant number of the convective time-step limit (AB2 with the limited κ = 1/3 scheme was
     /// measured stable at 0.6 and unstable at 0.8).
-    #[arg(long, default_value_t = 0.5)]
+    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
     pub cfl: f64,
     /// Time-step ceiling (seed: 0.01).
-    #[arg(long, default_value_t = 0.01)]
+    #[arg(long, default_value_t = 0.01, allow_negative_numbers = true)]
     pub dt_max: f64,
     /// The seed's rotation rule Δt·|θ̇| ≤ CC.
-    #[arg(long, default_value_t = 0.005)]
+    #[arg(long, default_value_t = 0.005, allow_negative_numbers = true)]
     pub cc: f64,
 }
 
@@ -95,7 +95,7 @@ pub struct ForcedArgs {
     #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     pub rate: f64,
     /// Spin-up time from α = 0 to the final rate at constant angular acceleration.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     pub spinup: f64,
     #[command(flatten)]
     pub solver: SolverArgs,
@@ -110,13 +110,13 @@ pub struct BodyArgs {
     #[arg(long, value_enum, default_value_t = Preset::Card)]
     pub preset: Preset,
     /// Mass ratio m* = m/(ρc²b) (overrides the preset).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub mass: Option<f64>,
     /// Inertia ratio I* = I/(ρc⁴b) (overrides the preset).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub inertia: Option<f64>,
     /// Gravity g* = g c/U² (overrides the preset; ignored by `pinned`).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub gravity: Option<f64>,
     /// Adams–Bashforth order for the plate's equations of motion, 1..=6.
     #[arg(long, default_value_t = 2)]
@@ -125,10 +125,10 @@ pub struct BodyArgs {
     #[arg(long, value_enum, default_value_t = AbStartArg::Ramp)]
     pub ab_start: AbStartArg,
     /// Hold the plate at its launch attitude for this long before release (flow development).
-    #[arg(long, default_value_t = 5.0)]
+    #[arg(long, default_value_t = 5.0, allow_negative_numbers = true)]
     pub develop: f64,
     /// Stop after this many net turns after release (or at --t-end, whichever comes first).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     pub turns: Option<f64>,
 }
 
@@ -164,7 +164,7 @@ pub struct PinnedArgs {
 #[derive(Args, Debug)]
 pub struct FreeArgs {
     /// Launch speed V₀ on the reference speed (the card: 1.0 = 3 ft/s).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
     pub v0: f64,
     /// Launch flight-path angle γ₀ (rad; −π/4 is down and to the right).
     #[arg(long, default_value_t = -std::f64::consts::FRAC_PI_4, allow_negative_numbers = true)]
