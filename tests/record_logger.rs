@@ -93,11 +93,12 @@ fn full_run_round_trips_through_the_rrd_file() {
         "/motion/gamma",
         "/motion/alpha",
         "/solver/dt",
-        paths::PLATE,
-        paths::FOLLOW,
     ] {
         assert_eq!(d.rows(p), 200, "{p}");
     }
+    // Poses: every ≥ 0.004 c/U (here every step) and at every field snapshot.
+    assert_eq!(d.rows(paths::PLATE), 200 + accepted as usize);
+    assert_eq!(d.rows(paths::FOLLOW), 200 + accepted as usize);
     let cl = d.scalars("/coefficients/cl");
     assert_eq!(cl.len(), 200);
     assert!((cl[41] - sample(42, 0.01).cl).abs() < 1e-12);

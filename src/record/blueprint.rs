@@ -20,7 +20,10 @@ use rerun::blueprint::{
 use super::scene::paths;
 
 fn flow_view(name: &str, field: &str) -> Spatial2DView {
-    let mut contents = vec![format!("+ {}/**", paths::PLATE)];
+    let mut contents = vec![
+        format!("+ {}/**", paths::PLATE),
+        format!("+ {}", paths::REACH),
+    ];
     for other in paths::FIELDS {
         if *other != field {
             contents.push(format!("- {}/{other}", paths::PLATE));
@@ -57,7 +60,7 @@ pub(crate) fn default_blueprint() -> Blueprint {
             format!("+ {}/**", paths::POLAR_COEFFICIENTS),
             format!("+ {}/**", paths::POLAR_AXES),
         ]);
-    let polar_motion = Spatial2DView::new("V, θ̇ vs α")
+    let polar_motion = Spatial2DView::new("V, dθ/dt vs α")
         .with_origin(paths::POLAR_SCREEN)
         .with_contents([
             format!("+ {}/**", paths::POLAR_MOTION),

@@ -52,8 +52,10 @@
 //!
 //! ```text
 //! /world                          inertial frame, physical coordinates: Y up, gravity −Y
-//! /world/plate                    Transform3D per step: translation (X, Y), rotation θ about z
-//! /world/plate/outline            LineStrips2D, the plate rectangle in body coordinates (static)
+//! /world/plate                    Transform3D: translation (X, Y), rotation θ about z (every
+//!                                 0.004 c/U and at every field snapshot)
+//! /world/plate/outline            LineStrips2D, the plate in body coordinates (static): outline
+//!                                 (constant screen width) + centreline of the plate's thickness
 //! /world/plate/vorticity          DepthImage (f16) of ω, body coordinates, CyanToYellow, ±10
 //! /world/plate/pressure           DepthImage (f16) of p, Spectral, ±1.5
 //! /world/plate/speed              DepthImage (f16) of |u − w| in the streamline frame, Viridis, [0, 2]
@@ -62,11 +64,12 @@
 //! /world/plate/streamlines        LineStrips2D, contours of the relative stream function ψ − ψ_w
 //! /world/trajectory/NNNN          LineStrips2D, the centre's path, one entity per time segment
 //! /world/strobe/NNNN              LineStrips2D, plate outlines every 0.5 c/U along the path
-//! /world/follow                   Transform3D per step: translation (X, Y), scale (1, −1):
+//! /world/follow                   Transform3D: translation (X, Y) with the poses, static scale (1, −1):
 //!                                 a non-rotating frame on the plate, Y mirrored for the screen
+//! /world/follow/reach             LineStrips2D, faint circle swept by the image window (static)
 //! /world/screen                   Transform3D scale (1, −1): the inertial frame for the screen
 //! /coefficients/{cl,cd,cm}        Scalars per step (SeriesLines: C_L, C_D, C_M)
-//! /motion/{speed,omega,gamma,alpha}  Scalars per step (V, θ̇, γ, α; radians)
+//! /motion/{speed,omega,gamma,alpha}  Scalars per step (V, dθ/dt, γ, α; radians)
 //! /solver/dt                      Scalars per step
 //! /polar/coefficients/{cl,cd,cm}/NNNN  LineStrips2D of (α, C) grown over time
 //! /polar/motion/{speed,omega}/NNNN     LineStrips2D of (α, V) and (α, θ̇)

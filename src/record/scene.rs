@@ -25,6 +25,8 @@ pub mod paths {
     pub const FOLLOW: &str = "/world/follow";
     /// The inertial frame with Y mirrored for the screen (origin of the trajectory view).
     pub const WORLD_SCREEN: &str = "/world/screen";
+    /// A faint circle around the plate: the reach of the turning image window.
+    pub const REACH: &str = "/world/follow/reach";
     /// The plate pose: Transform3D (X, Y, θ); children are in body coordinates.
     pub const PLATE: &str = "/world/plate";
     pub const OUTLINE: &str = "/world/plate/outline";
@@ -64,7 +66,7 @@ const SERIES: [(&str, &str, u32); 9] = [
     ("/coefficients/cd", "C_D", 0xE8574CFF),
     ("/coefficients/cm", "C_M", 0x5CC27AFF),
     ("/motion/speed", "V", 0xF2A93BFF),
-    ("/motion/omega", "θ̇", 0xB07CE8FF),
+    ("/motion/omega", "dθ/dt", 0xB07CE8FF),
     ("/motion/gamma", "γ", 0x4CC9D6FF),
     ("/motion/alpha", "α", 0xE86FB0FF),
     (paths::DT, "Δt", 0xBBBBBBFF),
@@ -88,6 +90,8 @@ fn series_value(i: usize, s: &StepSample) -> f64 {
 const MAX_PENDING: usize = 4096;
 /// Longest a step waits before it is sent (live latency vs. chunk count).
 const STEP_FLUSH_EVERY: Duration = Duration::from_millis(500);
+/// Convective time between recorded plate poses (the scalars are recorded every step).
+const POSE_EVERY: f64 = 0.004;
 /// Convective time between points of the trajectory and the polar curves.
 const SAMPLE_EVERY: f64 = 0.02;
 
@@ -255,7 +259,7 @@ fn f16_bytes(values: &[f32], quantum: f32) -> Vec<u8> {
 }
 
 /// Colour-scale steps kept in the images: (upper − lower) / IMAGE_LEVELS.
-const IMAGE_LEVELS: f64 = 4096.0;
+const IMAGE_LEVELS: f64 = 1024.0;
 
 /// All logging state of one run.
 pub(crate) struct Scene {
@@ -265,6 +269,9 @@ pub(crate) struct Scene {
     thickness: f64,
     strobe_every: f64,
     pending: Vec<StepSample>,
+    /// Plate poses waiting to be sent (every POSE_EVERY, and at every field snapshot).
+    poses: Vec<(u64, f64, f64, f64, f64)>,
+    next_pose_t: f64,
     last_flush: Instant,
     trajectory: SegmentedCurve,
     strobe: SegmentedCurve,
@@ -352,6 +359,8 @@ impl Scene {
                 0.5
             },
             pending: Vec::with_capacity(MAX_PENDING),
+            poses: Vec::new(),
+            next_pose_t: f64::NEG_INFINITY,
             last_flush: Instant::now(),
             trajectory: SegmentedCurve::new(
                 paths::TRAJECTORY,
@@ -397,12 +406,33 @@ impl Scene {
             &Transform3D::from_translation_scale([0.0, 0.0, 0.0], [1.0, -1.0, 1.0]),
         )?;
 
+        // The plate: its outline (constant on-screen width, visible when zoomed out) and a fill
+        // of its true thickness.
+        let h = (0.5 * self.thickness) as f32;
         rec.log_static(
             paths::OUTLINE,
-            &LineStrips2D::new([plate_outline(self.thickness)])
+            &LineStrips2D::new([plate_outline(self.thickness), vec![[-0.5, 0.0], [0.5, 0.0]]])
                 .with_colors([Color::from_rgb(255, 255, 255)])
-                .with_radii([Radius::new_ui_points(1.5)])
+                .with_radii([Radius::new_ui_points(1.5), Radius::new_scene_units(h)])
                 .with_draw_order(50.0),
+        )?;
+        // A faint circle swept by the image window's corners: keeps the flow views' bounds steady
+        // while the window turns with the plate.
+        let w = opts.field_window;
+        let reach = [w.x0.hypot(w.y0), w.x0.hypot(w.y1), w.x1.hypot(w.y0), w.x1.hypot(w.y1)]
+            .into_iter()
+            .fold(0.0f64, f64::max) as f32;
+        let circle: Vec<[f32; 2]> = (0..=128)
+            .map(|k| {
+                let a = k as f32 / 128.0 * std::f32::consts::TAU;
+                [reach * a.cos(), reach * a.sin()]
+            })
+            .collect();
+        rec.log_static(
+            paths::REACH,
+            &LineStrips2D::new([circle])
+                .with_colors([Color::from_unmultiplied_rgba(255, 255, 255, 40)])
+                .with_radii([Radius::new_ui_points(0.5)]),
         )?;
 
         let img = self.image;
@@ -497,6 +527,10 @@ impl Scene {
     /// Queues one step; sends the queue when it is full or old.
     pub fn step(&mut self, s: StepSample) -> rerun::RecordingStreamResult<()> {
         self.pending.push(s);
+        if s.t >= self.next_pose_t {
+            self.next_pose_t = s.t + POSE_EVERY;
+            self.poses.push((s.step, s.t, s.x, s.y, s.theta));
+        }
         self.steps_logged += 1;
         self.curves(&s)?;
         self.last = Some(s);
@@ -574,11 +608,30 @@ impl Scene {
                 Scalars::new(p.iter().map(|s| series_value(i, s))).columns_of_unit_batches()?,
             )?;
         }
-        let translations: Vec<[f32; 3]> = p.iter().map(|s| [s.x as f32, s.y as f32, 0.0]).collect();
+        self.pending = p;
+        self.pending.clear();
+        self.flush_poses()
+    }
+
+    /// Sends the queued plate poses: `/world/plate` (translation + rotation) and `/world/follow`
+    /// (translation only; its mirror scale is static).
+    fn flush_poses(&mut self) -> rerun::RecordingStreamResult<()> {
+        if self.poses.is_empty() {
+            return Ok(());
+        }
+        let p = std::mem::take(&mut self.poses);
+        let index = || {
+            [
+                TimeColumn::new_sequence(TIMELINE_STEP, p.iter().map(|s| s.0 as i64)),
+                TimeColumn::new_duration_secs(TIMELINE_TIME, p.iter().map(|s| s.1)),
+            ]
+        };
+        let translations: Vec<[f32; 3]> =
+            p.iter().map(|s| [s.2 as f32, s.3 as f32, 0.0]).collect();
         let quats: Vec<[f32; 4]> = p
             .iter()
             .map(|s| {
-                let h = 0.5 * s.theta;
+                let h = 0.5 * s.4;
                 [0.0, 0.0, h.sin() as f32, h.cos() as f32]
             })
             .collect();
@@ -595,11 +648,10 @@ impl Scene {
             index(),
             Transform3D::new()
                 .with_many_translation(translations)
-                .with_many_scale(p.iter().map(|_| [1.0f32, -1.0, 1.0]))
                 .columns_of_unit_batches()?,
         )?;
-        self.pending = p;
-        self.pending.clear();
+        self.poses = p;
+        self.poses.clear();
         Ok(())
     }
 
@@ -610,6 +662,7 @@ impl Scene {
         skipped: u64,
     ) -> rerun::RecordingStreamResult<()> {
         let painted = self.painter.paint(snap);
+        self.poses.push((snap.step, snap.t, snap.x, snap.y, snap.theta));
         self.set_time(snap.step, snap.t);
         let img = self.image;
         let size = [img.width as u32, img.height as u32];
@@ -662,6 +715,11 @@ impl Scene {
         outcome: &RunOutcome,
         stats_md: &str,
     ) -> rerun::RecordingStreamResult<()> {
+        if let Some(s) = self.last {
+            if self.poses.last().is_none_or(|p| p.0 != s.step) {
+                self.poses.push((s.step, s.t, s.x, s.y, s.theta));
+            }
+        }
         self.flush_steps()?;
         let (step, t) = self.last.map(|s| (s.step, s.t)).unwrap_or((0, 0.0));
         self.set_time(step, t);
@@ -701,7 +759,7 @@ fn config_markdown(info: &RunInfo, opts: &RecordOptions, img: &ImageGrid) -> Str
          - **case**: {case}\n\
          - **command line**:\n\n{cmd}\n\
          - **recording**: field snapshots every {fe} c/U; images {iw}×{ih} px over \
-           x ∈ [{x0}, {x1}], y ∈ [{y0}, {y1}] (body axes, chords); streamlines and speed in frame \
+           x in [{x0}, {x1}], y in [{y0}, {y1}] (body axes, chords); streamlines and speed in frame \
            {fr} ({frd}); timelines `time` (convective time t·U/c, shown as seconds) and `step`.\n\
          - **grid**: {nx} × {ny} cells; plate thickness {th} c.\n\n\
          ## Configuration\n\n{json}",

@@ -1,0 +1,89 @@
+//! A synthetic recording to look at (and to measure sizes with):
+//!
+//! ```sh
+//! PLATEFALL_DEMO_T_END=60 PLATEFALL_DEMO_OUT=/tmp/platefall_demo.rrd \
+//!     cargo test --release --test record_demo -- --ignored --nocapture
+//! /work/shared/tools/rrd-screenshot.sh /tmp/platefall_demo.rrd /tmp/shot.png
+//! ```
+//! Optional: PLATEFALL_DEMO_FIELD_EVERY, PLATEFALL_DEMO_FIELD_RES, PLATEFALL_DEMO_DT.
+mod record_common;
+
+use std::time::Instant;
+
+use platefall::record::messages::{RunOutcome, RunStatus};
+use platefall::record::{spawn_logger, RecordOptions};
+use record_common::*;
+
+fn env_f64(name: &str, default: f64) -> f64 {
+    std::env::var(name)
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(default)
+}
+
+#[test]
+#[ignore = "writes a demo recording to /tmp; run by hand"]
+fn demo_recording() {
+    let t_end = env_f64("PLATEFALL_DEMO_T_END", 6.0);
+    let dt = env_f64("PLATEFALL_DEMO_DT", 0.004);
+    let out = std::env::var("PLATEFALL_DEMO_OUT").unwrap_or("/tmp/platefall_demo.rrd".into());
+    let defaults = RecordOptions::default();
+    let field_every = env_f64("PLATEFALL_DEMO_FIELD_EVERY", defaults.field_every);
+    let field_res = env_f64("PLATEFALL_DEMO_FIELD_RES", defaults.field_res as f64) as usize;
+    let g = grid(250, 200, 0.0625);
+    let opts = RecordOptions {
+        t_end,
+        field_every,
+        field_res,
+        max_fields_in_flight: 8,
+        ..RecordOptions::to_file(&out)
+    };
+    let t0 = Instant::now();
+    let mut logger = spawn_logger(opts, run_info(g.clone())).unwrap();
+    let steps = (t_end / dt).round() as u64;
+    let mut snap_time = 0.0;
+    let mut offered = 0;
+    for k in 1..=steps {
+        let s = sample(k, dt);
+        logger.step(s).unwrap();
+        if logger.field_due(s.t) {
+            let ts = Instant::now();
+            let snap = snapshot(&g, &s);
+            snap_time += ts.elapsed().as_secs_f64();
+            // Pace like a real solver would: wait while the logger is busy rather than skip.
+            let mut snap = Some(snap);
+            while let Some(sn) = snap.take() {
+                if !logger.offer_field(sn.clone()) {
+                    std::thread::sleep(std::time::Duration::from_millis(5));
+                    snap = Some(sn);
+                }
+            }
+            offered += 1;
+        }
+    }
+    let t_run = t0.elapsed();
+    let report = logger
+        .finish(RunOutcome {
+            status: RunStatus::Completed,
+            summary_json: "{\n  \"synthetic\": true\n}".into(),
+            report: "synthetic demo run".into(),
+        })
+        .unwrap();
+    let (path, bytes) = report.rrd.clone().unwrap();
+    eprintln!(
+        "demo: {} steps, {} snapshots offered, {} logged, {} skipped; {:.2} MB → {:.1} kB per snapshot (all data); \
+         run {:.1}s (snapshot generation {:.1}s), total {:.1}s; {}",
+        report.steps,
+        offered,
+        report.fields_logged,
+        report.fields_skipped,
+        bytes as f64 / 1e6,
+        bytes as f64 / 1e3 / report.fields_logged.max(1) as f64,
+        t_run.as_secs_f64(),
+        snap_time,
+        t0.elapsed().as_secs_f64(),
+        path.display()
+    );
+    let d = decode(&path);
+    assert!(d.has_footer);
+}
