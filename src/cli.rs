@@ -81,7 +81,7 @@ pub struct StaticArgs {
     #[arg(long, default_value_t = 0.4, allow_negative_numbers = true)]
     pub alpha: f64,
     /// Symmetry-breaking pitch nudge ε (rad): θ = α + ε sin²(πt) during the first convective time.
-    #[arg(long, default_value_t = 0.02, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.05, allow_negative_numbers = true)]
     pub kick: f64,
     #[command(flatten)]
     pub solver: SolverArgs,
@@ -127,7 +127,8 @@ pub struct BodyArgs {
     /// Hold the plate at its launch attitude for this long before release (flow development).
     #[arg(long, default_value_t = 5.0, allow_negative_numbers = true)]
     pub develop: f64,
-    /// Stop after this many net turns after release (or at --t-end, whichever comes first).
+    /// Stop after this many net turns after release, or at --t-end, whichever comes first
+    /// [default: 10 for free, none for pinned].
     #[arg(long, allow_negative_numbers = true)]
     pub turns: Option<f64>,
 }
@@ -250,7 +251,7 @@ impl BodyArgs {
 /// The run configuration of a case subcommand, validated.
 pub fn run_config(cmd: &Command) -> Result<RunConfig, ConfigError> {
     let cfg = match cmd {
-        Command::Static(a) => a.solver.config(Case::Static { alpha: a.alpha, kick: a.kick }, 5000.0, 40.0, None, None),
+        Command::Static(a) => a.solver.config(Case::Static { alpha: a.alpha, kick: a.kick }, 5000.0, 80.0, None, None),
         Command::Forced(a) => {
             let t_end = a.spinup + 6.0 * std::f64::consts::PI / a.rate.abs().max(1e-3);
             a.solver.config(Case::Forced { rate: a.rate, spinup: a.spinup }, 5000.0, t_end.min(200.0), None, None)
