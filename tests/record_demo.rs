@@ -87,3 +87,61 @@ fn demo_recording() {
     let d = decode(&path);
     assert!(d.has_footer);
 }
+
+/// A blueprint file showing every view side by side (the default layout hides some in tabs),
+/// for screenshots: `RRS_BLUEPRINT=/tmp/platefall_all.rbl rrd-screenshot.sh FILE.rrd OUT.png`.
+#[test]
+#[ignore = "writes /tmp/platefall_all.rbl; run by hand"]
+fn all_views_blueprint() {
+    use platefall::record::paths;
+    use rerun::blueprint::{Blueprint, BlueprintActivation, Grid, Spatial2DView, TimeSeriesView};
+    let rec = rerun::RecordingStreamBuilder::new(platefall::record::APPLICATION_ID)
+        .blueprint()
+        .send_properties(false)
+        .save("/tmp/platefall_all.rbl")
+        .unwrap();
+    let flow = |name: &str, field: &str| {
+        Spatial2DView::new(name)
+            .with_origin(paths::FOLLOW)
+            .with_contents([
+                format!("+ {}/**", paths::PLATE),
+                format!("+ {}", paths::REACH),
+                format!("- {}/vorticity", paths::PLATE),
+                format!("- {}/pressure", paths::PLATE),
+                format!("- {}/speed", paths::PLATE),
+                format!("+ {}/{field}", paths::PLATE),
+            ])
+    };
+    let grid = Grid::new([
+        flow("Pressure", "pressure").into(),
+        flow("Speed", "speed").into(),
+        Spatial2DView::new("C vs α")
+            .with_origin(paths::POLAR_SCREEN)
+            .with_contents([
+                format!("+ {}/**", paths::POLAR_COEFFICIENTS),
+                format!("+ {}/**", paths::POLAR_AXES),
+            ])
+            .into(),
+        Spatial2DView::new("V, dθ/dt vs α")
+            .with_origin(paths::POLAR_SCREEN)
+            .with_contents([
+                format!("+ {}/**", paths::POLAR_MOTION),
+                format!("+ {}/**", paths::POLAR_AXES),
+            ])
+            .into(),
+        TimeSeriesView::new("Solver")
+            .with_contents([
+                format!("+ {}/**", paths::SOLVER),
+                format!("+ {}", paths::SKIPPED_FIELDS),
+            ])
+            .into(),
+        rerun::blueprint::TextDocumentView::new("Summary")
+            .with_origin(paths::SUMMARY)
+            .into(),
+    ])
+    .with_grid_columns(3);
+    Blueprint::new(grid)
+        .send(&rec, BlueprintActivation::default())
+        .unwrap();
+    rec.flush_blocking().unwrap();
+}

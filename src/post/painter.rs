@@ -205,21 +205,28 @@ impl FieldPainter {
     /// Contours of the relative stream function ψ − ψ_observer on the contour grid.
     fn streamlines(&self, snap: &FieldSnapshot, u: &[f64], v: &[f64]) -> (Vec<Polyline>, f64) {
         let frame = self.opts.frame;
-        let psi_nodes = stream_function_at_nodes(&self.grid, u, v);
+        // Relative stream function at the nodes (exact there), then interpolated.
+        let mut psi_nodes = stream_function_at_nodes(&self.grid, u, v);
+        let nxn = self.grid.xn.len();
+        for (k, p) in psi_nodes.iter_mut().enumerate() {
+            let (x, y) = (self.grid.xn[k % nxn], self.grid.yn[k / nxn]);
+            *p -= frame.observer_stream_function(snap, x, y);
+        }
         let reference = bilinear(&psi_nodes, &self.w_origin.0, &self.w_origin.1)[0];
         let mut psi = bilinear(&psi_nodes, &self.w_ct.0, &self.w_ct.1);
-        let cw = self.ct_x.len();
         let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-        for (k, p) in psi.iter_mut().enumerate() {
-            let (x, y) = (self.ct_x[k % cw], self.ct_y[k / cw]);
-            *p -= reference + frame.observer_stream_function(snap, x, y);
+        for p in psi.iter_mut() {
+            *p -= reference;
             if p.is_finite() {
                 lo = lo.min(*p);
                 hi = hi.max(*p);
             }
         }
         let base = self.opts.psi_spacing;
-        if !(lo.is_finite() && hi.is_finite() && base > 0.0 && base.is_finite()) {
+        // No flow relative to the observer (ψ constant up to rounding): no streamlines.
+        if !(lo.is_finite() && hi.is_finite() && base > 0.0 && base.is_finite())
+            || hi - lo < 1e-9 * base
+        {
             return (Vec::new(), base);
         }
         let max_levels = self.opts.max_levels.max(1) as f64;

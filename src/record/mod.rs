@@ -53,7 +53,7 @@
 //! ```text
 //! /world                          inertial frame, physical coordinates: Y up, gravity −Y
 //! /world/plate                    Transform3D: translation (X, Y), rotation θ about z (every
-//!                                 0.004 c/U and at every field snapshot)
+//!                                 0.01 c/U and at every field snapshot)
 //! /world/plate/outline            LineStrips2D, the plate in body coordinates (static): outline
 //!                                 (constant screen width) + centreline of the plate's thickness
 //! /world/plate/vorticity          DepthImage (f16) of ω, body coordinates, CyanToYellow, ±10
@@ -64,15 +64,16 @@
 //! /world/plate/streamlines        LineStrips2D, contours of the relative stream function ψ − ψ_w
 //! /world/trajectory/NNNN          LineStrips2D, the centre's path, one entity per time segment
 //! /world/strobe/NNNN              LineStrips2D, plate outlines every 0.5 c/U along the path
-//! /world/follow                   Transform3D: translation (X, Y) with the poses, static scale (1, −1):
+//! /world/follow                   Transform3D with the poses: translation (X, Y), scale (1, −1):
 //!                                 a non-rotating frame on the plate, Y mirrored for the screen
 //! /world/follow/reach             LineStrips2D, faint circle swept by the image window (static)
 //! /world/screen                   Transform3D scale (1, −1): the inertial frame for the screen
 //! /coefficients/{cl,cd,cm}        Scalars per step (SeriesLines: C_L, C_D, C_M)
 //! /motion/{speed,omega,gamma,alpha}  Scalars per step (V, dθ/dt, γ, α; radians)
 //! /solver/dt                      Scalars per step
-//! /polar/coefficients/{cl,cd,cm}/NNNN  LineStrips2D of (α, C) grown over time
-//! /polar/motion/{speed,omega}/NNNN     LineStrips2D of (α, V) and (α, θ̇)
+//! /polar/coefficients/{cl,cd,cm}/NNNN  LineStrips2D of (2α, C) grown over time (x = 2α
+//!                                      widens the α axis; values clipped to ±10)
+//! /polar/motion/{speed,omega}/NNNN     LineStrips2D of (2α, V) and (2α, dθ/dt)
 //! /polar/axes                     static axes and tick labels of the α plots
 //! /polar/screen                   Transform3D scale (1, −1) for the α plots
 //! /run/config                     TextDocument (markdown): title, version, command line, config JSON

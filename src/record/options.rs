@@ -204,7 +204,7 @@ pub enum OptionsError {
     FieldWindow(String),
     #[error("--streamlines-frame {0}: must be 1, 2, 3 or 4 (1 plate-fixed, 2 fluid-fixed, 3 translating, 4 rotating)")]
     StreamlinesFrame(u8),
-    #[error("--server-memory-limit {value:?}: {reason} (e.g. \"25%\" or \"2GB\")")]
+    #[error("--server-memory-limit {value:?}: {reason}; accepted: a share of RAM like \"25%\", a size like \"2GB\", or \"unlimited\"")]
     MemoryLimit { value: String, reason: String },
     #[error("--connect {value:?}: not a Rerun proxy URL ({reason}); expected e.g. rerun+http://127.0.0.1:9876/proxy")]
     ConnectUrl { value: String, reason: String },

@@ -91,7 +91,11 @@ const MAX_PENDING: usize = 4096;
 /// Longest a step waits before it is sent (live latency vs. chunk count).
 const STEP_FLUSH_EVERY: Duration = Duration::from_millis(500);
 /// Convective time between recorded plate poses (the scalars are recorded every step).
-const POSE_EVERY: f64 = 0.004;
+const POSE_EVERY: f64 = 0.01;
+/// The α plots draw x = ALPHA_SCALE·α (the 2D view keeps a 1:1 aspect; this widens α).
+const ALPHA_SCALE: f64 = 2.0;
+/// The α plots clip values to ±POLAR_CLIP (the impulsive start spikes far beyond).
+const POLAR_CLIP: f64 = 10.0;
 /// Convective time between points of the trajectory and the polar curves.
 const SAMPLE_EVERY: f64 = 0.02;
 
@@ -311,7 +315,7 @@ impl Scene {
         };
         // At most ~40 segments per curve, at least 2 time units each.
         let seg_len = (t_end / 40.0).max(2.0);
-        let wrap = std::f64::consts::PI;
+        let wrap = ALPHA_SCALE * std::f64::consts::PI;
         let polars = vec![
             SegmentedCurve::new(
                 &format!("{}/cl", paths::POLAR_COEFFICIENTS),
@@ -419,9 +423,14 @@ impl Scene {
         // A faint circle swept by the image window's corners: keeps the flow views' bounds steady
         // while the window turns with the plate.
         let w = opts.field_window;
-        let reach = [w.x0.hypot(w.y0), w.x0.hypot(w.y1), w.x1.hypot(w.y0), w.x1.hypot(w.y1)]
-            .into_iter()
-            .fold(0.0f64, f64::max) as f32;
+        let reach = [
+            w.x0.hypot(w.y0),
+            w.x0.hypot(w.y1),
+            w.x1.hypot(w.y0),
+            w.x1.hypot(w.y1),
+        ]
+        .into_iter()
+        .fold(0.0f64, f64::max) as f32;
         let circle: Vec<[f32; 2]> = (0..=128)
             .map(|k| {
                 let a = k as f32 / 128.0 * std::f32::consts::TAU;
@@ -464,12 +473,19 @@ impl Scene {
             )?;
         }
 
-        // Axes of the α plots: α in [−π, π], ticks every π/2; value ticks every 1.
+        // Axes of the α plots: x = ALPHA_SCALE·α over [−π, π] (ticks every π/2), y = value
+        // (ticks every 1, labels every 2).
         let pi = std::f32::consts::PI;
-        let mut axes = vec![vec![[-pi, 0.0], [pi, 0.0]], vec![[0.0, -2.0], [0.0, 2.0]]];
+        let ax = ALPHA_SCALE as f32;
+        let mut axes = vec![
+            vec![[-ax * pi, 0.0], [ax * pi, 0.0]],
+            vec![[0.0, -6.0], [0.0, 6.0]],
+        ];
         for k in [-2.0f32, -1.0, 1.0, 2.0] {
-            axes.push(vec![[k * pi / 2.0, -0.05], [k * pi / 2.0, 0.05]]);
-            axes.push(vec![[-0.05, k], [0.05, k]]);
+            axes.push(vec![[ax * k * pi / 2.0, -0.1], [ax * k * pi / 2.0, 0.1]]);
+        }
+        for k in (-6..=6).filter(|k| *k != 0) {
+            axes.push(vec![[-0.1, k as f32], [0.1, k as f32]]);
         }
         rec.log_static(
             paths::POLAR_AXES,
@@ -477,18 +493,23 @@ impl Scene {
                 .with_colors([Color::from_rgb(140, 140, 140)])
                 .with_radii([Radius::new_ui_points(0.6)]),
         )?;
+        let mut label_pos = vec![
+            [ax * pi, 0.0],
+            [ax * pi / 2.0, 0.0],
+            [-ax * pi / 2.0, 0.0],
+            [-ax * pi, 0.0],
+        ];
+        let mut labels: Vec<String> = ["α = π", "π/2", "−π/2", "−π"].map(String::from).to_vec();
+        for k in [-6, -4, -2, 2, 4, 6] {
+            label_pos.push([0.0, k as f32]);
+            labels.push(k.to_string());
+        }
         rec.log_static(
             format!("{}/labels", paths::POLAR_AXES),
-            &Points2D::new([
-                [pi, 0.0],
-                [pi / 2.0, 0.0],
-                [-pi / 2.0, 0.0],
-                [0.0, 1.0],
-                [0.0, 2.0],
-            ])
-            .with_labels(["α = π", "π/2", "−π/2", "1", "2"])
-            .with_radii([Radius::new_ui_points(1.0)])
-            .with_colors([Color::from_rgb(140, 140, 140)]),
+            &Points2D::new(label_pos)
+                .with_labels(labels)
+                .with_radii([Radius::new_ui_points(1.0)])
+                .with_colors([Color::from_rgb(140, 140, 140)]),
         )?;
 
         rec.log_static(
@@ -555,10 +576,10 @@ impl Scene {
             self.next_sample_t = s.t + SAMPLE_EVERY;
             self.set_time(s.step, s.t);
             self.trajectory.push(&self.rec, s.t, [s.x, s.y])?;
-            let alpha = s.alpha;
+            let x = ALPHA_SCALE * s.alpha;
             let values = [s.cl, s.cd, s.cm, s.speed, s.omega];
             for (curve, v) in self.polars.iter_mut().zip(values) {
-                curve.push(&self.rec, s.t, [alpha, v])?;
+                curve.push(&self.rec, s.t, [x, v.clamp(-POLAR_CLIP, POLAR_CLIP)])?;
             }
             changed = true;
         }
@@ -614,7 +635,7 @@ impl Scene {
     }
 
     /// Sends the queued plate poses: `/world/plate` (translation + rotation) and `/world/follow`
-    /// (translation only; its mirror scale is static).
+    /// (translation + mirror).
     fn flush_poses(&mut self) -> rerun::RecordingStreamResult<()> {
         if self.poses.is_empty() {
             return Ok(());
@@ -626,8 +647,7 @@ impl Scene {
                 TimeColumn::new_duration_secs(TIMELINE_TIME, p.iter().map(|s| s.1)),
             ]
         };
-        let translations: Vec<[f32; 3]> =
-            p.iter().map(|s| [s.2 as f32, s.3 as f32, 0.0]).collect();
+        let translations: Vec<[f32; 3]> = p.iter().map(|s| [s.2 as f32, s.3 as f32, 0.0]).collect();
         let quats: Vec<[f32; 4]> = p
             .iter()
             .map(|s| {
@@ -646,8 +666,11 @@ impl Scene {
         self.rec.send_columns(
             paths::FOLLOW,
             index(),
+            // The mirror is repeated in every row: a temporal Transform3D row replaces the
+            // whole transform (a static scale would be ignored once a translation is logged).
             Transform3D::new()
                 .with_many_translation(translations)
+                .with_many_scale(p.iter().map(|_| [1.0f32, -1.0, 1.0]))
                 .columns_of_unit_batches()?,
         )?;
         self.poses = p;
@@ -662,7 +685,8 @@ impl Scene {
         skipped: u64,
     ) -> rerun::RecordingStreamResult<()> {
         let painted = self.painter.paint(snap);
-        self.poses.push((snap.step, snap.t, snap.x, snap.y, snap.theta));
+        self.poses
+            .push((snap.step, snap.t, snap.x, snap.y, snap.theta));
         self.set_time(snap.step, snap.t);
         let img = self.image;
         let size = [img.width as u32, img.height as u32];

@@ -224,11 +224,25 @@ impl Decoded {
 }
 
 pub fn decode(path: &Path) -> Decoded {
+    decode_impl(path, false)
+}
+
+/// Like [`decode`], but stops quietly at the first undecodable message (a file still being
+/// written by someone else).
+pub fn decode_partial(path: &Path) -> Decoded {
+    decode_impl(path, true)
+}
+
+fn decode_impl(path: &Path, partial: bool) -> Decoded {
     let file = std::fs::File::open(path).expect("open rrd");
     let mut it = DecoderApp::decode_lazy(BufReader::new(file));
     let mut d = Decoded::default();
     for msg in &mut it {
-        let msg = msg.expect("decode rrd");
+        let msg = match msg {
+            Ok(m) => m,
+            Err(_) if partial => break,
+            Err(e) => panic!("decode rrd: {e}"),
+        };
         match msg {
             LogMsg::ArrowMsg(store_id, arrow) => {
                 if store_id.kind() != rerun::StoreKind::Recording {
@@ -253,7 +267,7 @@ pub fn decode(path: &Path) -> Decoded {
             LogMsg::SetStoreInfo(_) | LogMsg::BlueprintActivationCommand(_) => {}
         }
     }
-    d.has_footer = !it.rrd_manifests().expect("manifests").is_empty();
+    d.has_footer = !it.rrd_manifests().map(|m| m.is_empty()).unwrap_or(true);
     d
 }
 
