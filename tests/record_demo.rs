@@ -88,18 +88,10 @@ fn demo_recording() {
     assert!(d.has_footer);
 }
 
-/// A blueprint file showing every view side by side (the default layout hides some in tabs),
-/// for screenshots: `RRS_BLUEPRINT=/tmp/platefall_all.rbl rrd-screenshot.sh FILE.rrd OUT.png`.
-#[test]
-#[ignore = "writes /tmp/platefall_all.rbl; run by hand"]
-fn all_views_blueprint() {
+/// Every view side by side (the default layout hides some in tabs), for screenshots.
+fn all_views_blueprint() -> rerun::blueprint::Blueprint {
     use platefall::record::paths;
-    use rerun::blueprint::{Blueprint, BlueprintActivation, Grid, Spatial2DView, TimeSeriesView};
-    let rec = rerun::RecordingStreamBuilder::new(platefall::record::APPLICATION_ID)
-        .blueprint()
-        .send_properties(false)
-        .save("/tmp/platefall_all.rbl")
-        .unwrap();
+    use rerun::blueprint::{Blueprint, Grid, Spatial2DView, TimeSeriesView};
     let flow = |name: &str, field: &str| {
         Spatial2DView::new(name)
             .with_origin(paths::FOLLOW)
@@ -141,7 +133,46 @@ fn all_views_blueprint() {
     ])
     .with_grid_columns(3);
     Blueprint::new(grid)
-        .send(&rec, BlueprintActivation::default())
+}
+
+/// Rewrites PLATEFALL_INSPECT_IN (an .rrd) to /tmp/platefall_inspect.rrd with its own layout
+/// replaced by one that shows every view at once:
+/// `PLATEFALL_INSPECT_IN=run.rrd cargo test --release --test record_demo inspect -- --ignored`.
+#[test]
+#[ignore = "rewrites a recording for screenshots; run by hand"]
+fn inspect_all_views() {
+    use rerun::external::re_log_encoding::{DecoderApp, Encoder, EncodingOptions};
+    use rerun::log::LogMsg;
+    let input = std::env::var("PLATEFALL_INSPECT_IN").unwrap_or("/tmp/platefall_demo.rrd".into());
+    let out = std::fs::File::create("/tmp/platefall_inspect.rrd").unwrap();
+    let mut enc = Encoder::new_eager(
+        rerun::external::re_build_info::CrateVersion::LOCAL,
+        EncodingOptions::PROTOBUF_COMPRESSED,
+        std::io::BufWriter::new(out),
+    )
+    .unwrap();
+    let reader = std::io::BufReader::new(std::fs::File::open(&input).unwrap());
+    for msg in DecoderApp::decode_lazy(reader) {
+        let msg = msg.unwrap();
+        let keep = match &msg {
+            LogMsg::BlueprintActivationCommand(_) => false,
+            other => other.store_id().kind() == rerun::StoreKind::Recording,
+        };
+        if keep {
+            enc.append(&msg).unwrap();
+        }
+    }
+    let (rec, storage) = rerun::RecordingStreamBuilder::new(platefall::record::APPLICATION_ID)
+        .blueprint()
+        .send_properties(false)
+        .memory()
+        .unwrap();
+    all_views_blueprint()
+        .send(&rec, rerun::blueprint::BlueprintActivation::default())
         .unwrap();
     rec.flush_blocking().unwrap();
+    for msg in storage.take() {
+        enc.append(&msg).unwrap();
+    }
+    enc.finish().unwrap();
 }

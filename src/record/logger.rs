@@ -68,7 +68,8 @@ pub struct LoggerReport {
     /// URL of the --serve server.
     pub serve_url: Option<String>,
     pub connect: Option<ConnectReport>,
-    /// Warnings worth showing the user (already printed to stderr once).
+    /// Warnings for the end-of-run report (part of [`LoggerReport::lines`]; problems found when
+    /// the sinks were opened were also printed then).
     pub notes: Vec<String>,
     /// Keeps the --serve server alive after the run; dropped by `serve_until_interrupted`.
     server: Option<RecordingStream>,
@@ -121,17 +122,10 @@ impl LoggerReport {
         if let Some(url) = &self.serve_url {
             out.push(format!("served at {url}"));
         }
-        if let Some(c) = &self.connect {
+        if let Some(c) = self.connect.as_ref().filter(|c| c.ever_connected) {
             out.push(format!(
-                "streamed to {}: {} messages sent, {} dropped{}",
-                c.url,
-                c.sent,
-                c.dropped,
-                if c.ever_connected {
-                    ""
-                } else {
-                    " (no viewer ever connected)"
-                }
+                "streamed to {}: {} messages sent, {} dropped",
+                c.url, c.sent, c.dropped
             ));
         }
         out.extend(self.notes.iter().cloned());
@@ -500,20 +494,21 @@ fn run_logger(t: LoggerThread) -> anyhow::Result<LoggerReport> {
         }
     }
     if let Some(c) = &connect_report {
+        let file_note = if rrd.is_some() {
+            " (the .rrd file is complete)"
+        } else {
+            ""
+        };
         if !c.ever_connected {
-            let n = format!(
-                "--connect {}: no viewer was reachable; nothing was streamed there (the .rrd file is complete)",
+            notes.push(format!(
+                "--connect {}: no viewer was reachable; nothing was streamed there{file_note}",
                 c.url
-            );
-            eprintln!("platefall: warning: {n}");
-            notes.push(n);
+            ));
         } else if c.dropped > 0 {
-            let n = format!(
-                "--connect {}: the viewer did not keep up; {} messages were dropped for it (the .rrd file is complete)",
+            notes.push(format!(
+                "--connect {}: the viewer did not keep up; {} messages were dropped for it{file_note}",
                 c.url, c.dropped
-            );
-            eprintln!("platefall: warning: {n}");
-            notes.push(n);
+            ));
         }
     }
 

@@ -142,10 +142,10 @@ impl Progress {
         match &mut self.display {
             Display::Off => {}
             Display::Bar(bar) => {
+                bar.set_message(msg);
                 if self.t_end > 0.0 {
                     bar.set_position((self.t.clamp(0.0, self.t_end) * 1000.0).round() as u64);
                 }
-                bar.set_message(msg);
             }
             Display::Lines { last } => {
                 if now.duration_since(*last) >= LINE_EVERY {

@@ -548,7 +548,7 @@ impl Scene {
     /// Queues one step; sends the queue when it is full or old.
     pub fn step(&mut self, s: StepSample) -> rerun::RecordingStreamResult<()> {
         self.pending.push(s);
-        if s.t >= self.next_pose_t {
+        if s.t + 1e-9 >= self.next_pose_t {
             self.next_pose_t = s.t + POSE_EVERY;
             self.poses.push((s.step, s.t, s.x, s.y, s.theta));
         }
