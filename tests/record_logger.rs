@@ -498,3 +498,31 @@ fn serve_keeps_the_run_for_a_late_viewer() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_snapshot_that_does_not_fit_the_grid_is_reported_not_fatal() {
+    let dir = temp_dir("badsnap");
+    let rrd = dir.join("bad.rrd");
+    let g = grid(20, 16, 0.0625);
+    let logger = spawn_logger(RecordOptions::to_file(&rrd), run_info(g.clone())).unwrap();
+    let s = sample(1, 0.01);
+    logger.step(s).unwrap();
+    let mut bad = snapshot(&g, &s);
+    bad.u.pop();
+    assert!(logger.offer_field(bad));
+    assert!(logger.offer_field(snapshot(&g, &s)));
+    logger.step(sample(2, 0.01)).unwrap();
+    let report = logger.finish(outcome(RunStatus::Completed)).unwrap();
+    assert_eq!(report.fields_logged, 1);
+    let d = decode(&rrd);
+    assert!(d.has_footer);
+    assert_eq!(d.rows(&format!("{}/vorticity", paths::PLATE)), 1);
+    assert!(
+        d.texts(paths::STATUS)
+            .iter()
+            .any(|l| l.contains("ignored: u has")),
+        "{:?}",
+        d.texts(paths::STATUS)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -160,7 +160,26 @@ impl FieldPainter {
         &self.solid_px
     }
 
-    /// Paints one snapshot. The snapshot must belong to this painter's grid.
+    /// Checks that the snapshot's arrays have this grid's MAC sizes; the reason if not.
+    pub fn check(&self, snap: &FieldSnapshot) -> Result<(), String> {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let expect = [
+            ("u", snap.u.len(), (nx + 1) * ny),
+            ("v", snap.v.len(), nx * (ny + 1)),
+            ("p", snap.p.len(), nx * ny),
+        ];
+        for (name, got, want) in expect {
+            if got != want {
+                return Err(format!(
+                    "{name} has {got} values, the {nx} x {ny} grid needs {want}"
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// Paints one snapshot. The snapshot must belong to this painter's grid (see
+    /// [`check`](Self::check); wrong sizes panic).
     pub fn paint(&self, snap: &FieldSnapshot) -> PaintedFields {
         let grid = &*self.grid;
         let (u, v) = face_velocities(grid, snap);

@@ -416,7 +416,8 @@ fn run_logger(t: LoggerThread) -> anyhow::Result<LoggerReport> {
                 if let Some(sc) = &mut scene {
                     let skipped = shared.fields_skipped.load(Ordering::Relaxed);
                     match sc.field(&f, skipped) {
-                        Ok(()) => fields += 1,
+                        Ok(true) => fields += 1,
+                        Ok(false) => {}
                         Err(e) => {
                             errors.push(format!("recording: {e}"));
                             scene = None;

@@ -678,12 +678,22 @@ impl Scene {
         Ok(())
     }
 
-    /// Paints and logs one field snapshot; `skipped` is the number dropped so far.
+    /// Paints and logs one field snapshot; `skipped` is the number dropped so far. Returns false
+    /// (after a line in `/run/status`) for a snapshot that does not fit the grid.
     pub fn field(
         &mut self,
         snap: &FieldSnapshot,
         skipped: u64,
-    ) -> rerun::RecordingStreamResult<()> {
+    ) -> rerun::RecordingStreamResult<bool> {
+        if let Err(why) = self.painter.check(snap) {
+            self.status(
+                snap.step,
+                snap.t,
+                TextLogLevel::ERROR,
+                &format!("field snapshot at step {} ignored: {why}", snap.step),
+            )?;
+            return Ok(false);
+        }
         let painted = self.painter.paint(snap);
         self.poses
             .push((snap.step, snap.t, snap.x, snap.y, snap.theta));
@@ -730,7 +740,7 @@ impl Scene {
             self.skipped_reported = skipped;
         }
         self.fields_logged += 1;
-        Ok(())
+        Ok(true)
     }
 
     /// Final curves, status and summary.
