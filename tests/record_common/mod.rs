@@ -94,11 +94,14 @@ pub fn sample(step: u64, dt: f64) -> StepSample {
     }
 }
 
-/// A synthetic flow for `s` on `grid`: a regularised vortex street in body coordinates, built
-/// from a stream function so the MAC field is exactly divergence-free.
+/// A synthetic flow for `s` on `grid`: a regularised vortex street in body coordinates that
+/// blends smoothly into the plate's rigid motion at the plate (no-slip), built from a stream
+/// function so the MAC field is exactly divergence-free.
 pub fn snapshot(grid: &GridGeometry, s: &StepSample) -> FieldSnapshot {
     let (nx, ny) = (grid.nx(), grid.ny());
     let t = s.t;
+    let (c, sn) = (s.theta.cos(), s.theta.sin());
+    let (gx0, gy0, om) = (s.xdot * c + s.ydot * sn, -s.xdot * sn + s.ydot * c, s.omega);
     let vortices: Vec<(f64, f64, f64)> = (0..6)
         .map(|k| {
             let x0 = 0.7 + 0.7 * k as f64 + 0.35 * (t % 2.0);
@@ -107,14 +110,31 @@ pub fn snapshot(grid: &GridGeometry, s: &StepSample) -> FieldSnapshot {
             (x0, y0, g)
         })
         .collect();
+    // The plate: bounding box of the solid cells.
+    let (mut bx0, mut bx1, mut by0, mut by1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for j in 0..ny {
+        for i in 0..nx {
+            if grid.solid[i + nx * j] {
+                bx0 = bx0.min(grid.xn[i]);
+                bx1 = bx1.max(grid.xn[i + 1]);
+                by0 = by0.min(grid.yn[j]);
+                by1 = by1.max(grid.yn[j + 1]);
+            }
+        }
+    }
     let psi = |x: f64, y: f64| -> f64 {
-        vortices
+        let street: f64 = vortices
             .iter()
             .map(|&(x0, y0, g)| {
                 let r2 = (x - x0).powi(2) + (y - y0).powi(2);
                 -g / (4.0 * std::f64::consts::PI) * (r2 + 0.04).ln()
             })
-            .sum()
+            .sum();
+        let rigid = gx0 * y - gy0 * x - 0.5 * om * (x * x + y * y);
+        let dx = (bx0 - x).max(x - bx1).max(0.0);
+        let dy = (by0 - y).max(y - by1).max(0.0);
+        let blend = 1.0 - (-(dx * dx + dy * dy) / 0.0225).exp();
+        rigid + blend * (street - rigid)
     };
     let mut u = vec![0.0; (nx + 1) * ny];
     let mut v = vec![0.0; nx * (ny + 1)];
@@ -138,16 +158,15 @@ pub fn snapshot(grid: &GridGeometry, s: &StepSample) -> FieldSnapshot {
             p[i + nx * j] = -0.5 * (uc * uc + vc * vc);
         }
     }
-    let (c, sn) = (s.theta.cos(), s.theta.sin());
     FieldSnapshot {
         step: s.step,
         t: s.t,
         x: s.x,
         y: s.y,
         theta: s.theta,
-        gx0: s.xdot * c + s.ydot * sn,
-        gy0: -s.xdot * sn + s.ydot * c,
-        omega: s.omega,
+        gx0,
+        gy0,
+        omega: om,
         u,
         v,
         p,
