@@ -54,9 +54,12 @@ pub struct SolverArgs {
     /// --resolution, --extent and --growth.
     #[arg(long)]
     pub seed_grid: bool,
-    /// Plate thickness as a chord fraction (rounded to whole cells, at least one).
-    #[arg(long, default_value_t = 1.0 / 16.0, allow_negative_numbers = true)]
-    pub thickness: f64,
+    /// Plate thickness as a chord fraction, rounded to whole cells [default: one cell, 1/N, the
+    /// thinnest plate the grid holds; a real card is about 1/100 of its chord]. Plates two or more
+    /// cells thick have blunt edges that can hold a leading-edge vortex in a high-lift state at
+    /// α ≈ 0.4 (see the README).
+    #[arg(long, allow_negative_numbers = true)]
+    pub thickness: Option<f64>,
     /// Distance from the plate to the outer boundary, in chords.
     #[arg(long, default_value_t = 15.0, allow_negative_numbers = true)]
     pub extent: f64,
@@ -201,7 +204,7 @@ impl SolverArgs {
         }
         GridSpec {
             resolution: self.resolution,
-            thickness: self.thickness,
+            thickness: self.thickness.unwrap_or(1.0 / self.resolution.max(1) as f64),
             extent_x: self.extent,
             extent_y: self.extent,
             stretch: Stretch::GrowthCap(self.growth),

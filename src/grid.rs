@@ -62,11 +62,12 @@ impl GridSpec {
         }
     }
 
-    /// A modern grid: N cells per chord, the seed's plate thickness, 15 chords of extent, 4.5 % growth cap.
+    /// A modern grid: N cells per chord, a one-cell plate (the thinnest the grid holds), 15 chords of
+    /// extent, 4.5 % growth cap.
     pub fn modern(resolution: usize) -> Self {
         GridSpec {
             resolution,
-            thickness: 1.0 / 16.0,
+            thickness: 1.0 / resolution.max(1) as f64,
             extent_x: 15.0,
             extent_y: 15.0,
             stretch: Stretch::GrowthCap(1.045),
