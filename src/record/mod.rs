@@ -90,13 +90,19 @@
 //! max(2, t_end/40) c/U, one entity each, re-sent only while their segment grows, so the total
 //! size stays linear in the run length and scrubbing shows the curve up to the cursor.
 //!
-//! # Size budget
+//! # Size budget (measured, N = 32 card free fall, LZ4 file)
 //!
-//! Field snapshots dominate. Each holds three f16 images (256 × 197 px by default) and the
-//! streamlines: about 0.25 MB on disk after LZ4. The defaults (`--field-every 0.1`,
-//! `--field-res 256`) give 10 snapshots per c/U, so a 60 c/U free fall is ≈ 600 snapshots ≈ 150 MB
-//! plus ~2 MB of time series (15 000 steps). For a bug report (< 20 MB):
-//! `--field-every 0.5 --field-res 128` (≈ 0.07 MB per snapshot, 120 snapshots).
+//! - A field snapshot: three f16 images (256 × 197 px by default, values rounded to 1/1024 of
+//!   their colour range first, which halves the compressed size) plus the streamlines:
+//!   ≈ 0.11 MB in a developed wake; ≈ 0.03 MB at `--field-res 128`.
+//! - A step: ≈ 0.25 kB (eight scalar series, each row carrying a row id and both time indices;
+//!   rows are sent in chunks of up to 4 s, 1 s when a viewer watches live).
+//! - The default free fall (`platefall free`: 10 turns, t ≈ 27, 62.6k steps, 273 snapshots at
+//!   `--field-every 0.1`) is 47 MB. A 60 c/U run is ≈ 600 × 0.11 MB + steps × 0.25 kB: 70 MB at
+//!   15k steps, ≈ 105 MB at this solver's ~2300 steps per c/U; within the 200 MB budget.
+//! - For a bug report (< 20 MB): `--field-every 0.5 --field-res 128` gives 17.7 MB for the default
+//!   free fall (57 snapshots; the 62.6k steps are 16 MB of it). Longer runs: also shorten
+//!   `--t-end` / `--turns`, since the per-step series dominate.
 mod blueprint;
 pub mod csv;
 pub mod logger;

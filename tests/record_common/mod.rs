@@ -41,7 +41,7 @@ pub fn grid(nx: usize, ny: usize, thickness: f64) -> GridGeometry {
         for i in 0..nx {
             let (xc, yc) = (0.5 * (xn[i] + xn[i + 1]), 0.5 * (yn[j] + yn[j + 1]));
             solid[i + nx * j] =
-                xc.abs() < 0.5 && yc.abs() < thickness.max(0.5 * (yn[j + 1] - yn[j]));
+                xc.abs() < 0.5 && yc.abs() < (0.5 * thickness).max(0.5 * (yn[j + 1] - yn[j]));
         }
     }
     GridGeometry { xn, yn, solid }
