@@ -114,7 +114,10 @@ fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     if let Some(p) = summary_path(cmd) {
         check_writable("--summary", p)?;
     }
-    let opts = record_args(cmd).resolve(case, config.t_end)?;
+    // A run that stops after a number of turns has no known end time: show no ETA rather than a
+    // wrong one.
+    let progress_end = if config.turns.is_some() { f64::NAN } else { config.t_end };
+    let opts = record_args(cmd).resolve(case, progress_end)?;
     if let Some(b) = &config.body {
         if let Some(advice) = platefall::body::coupling_advice(&b.props) {
             eprintln!("warning: {advice}");
