@@ -45,6 +45,9 @@ pub struct Summary {
     pub autorotation_rule: Option<String>,
     /// Lag of max C_D behind max C_L in α (rad), averaged over the developed half-turns.
     pub lag_cd_behind_cl: Option<f64>,
+    /// Peak lift coefficient in the sense of the rotation (max C_L turning counter-clockwise,
+    /// −min C_L turning clockwise), over the developed part; the seed's "max C_L in autorotation".
+    pub peak_cl_rotation: Option<f64>,
     /// Card preset: the means in physical units.
     pub mean_speed_ft_s: Option<f64>,
     pub mean_omega_rad_s: Option<f64>,
@@ -92,6 +95,8 @@ fn developed(config: &RunConfig, rec: &RunRecord, freq: Option<f64>) -> (Option<
 }
 
 /// Mean lag (in α) of the maximum of C_D behind the maximum of C_L, per half-turn (period π in θ).
+/// For clockwise rotation the lift is taken in the rotation's own sense (−C_L): the mirror image
+/// y → −y of a counter-clockwise run turns clockwise with C_L negated and C_D unchanged.
 fn lag_cd_behind_cl(samples: &[StepSample], w: Window) -> Option<f64> {
     let inside: Vec<&StepSample> = samples.iter().filter(|s| s.t >= w.t0 && s.t <= w.t1).collect();
     let first = inside.first()?;
@@ -103,7 +108,7 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: Window) -> Option<f64> {
         if end {
             let seg = &inside[k0..k];
             if k < inside.len() || dir * (seg.last()?.theta - seg[0].theta) >= PI * 0.999 {
-                let a_cl = seg.iter().max_by(|a, b| a.cl.total_cmp(&b.cl))?.theta;
+                let a_cl = seg.iter().max_by(|a, b| (dir * a.cl).total_cmp(&(dir * b.cl)))?.theta;
                 let a_cd = seg.iter().max_by(|a, b| a.cd.total_cmp(&b.cd))?.theta;
                 lags.push((dir * (a_cd - a_cl)).rem_euclid(PI));
             }
@@ -162,6 +167,10 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord) -> Summary {
         autorotation_rule: coupled
             .then(|| "time of the first complete net turn after release (counted from any reversal)".into()),
         lag_cd_behind_cl: if moving { w.and_then(|w| lag_cd_behind_cl(s, w)) } else { None },
+        peak_cl_rotation: match (moving, mean_omega, cl_range) {
+            (true, Some(om), Some((lo, hi))) => Some(if om >= 0.0 { hi } else { -lo }),
+            _ => None,
+        },
         mean_speed_ft_s: physical.as_ref().and_then(|p| mean_speed.map(|v| p.speed_to_ft_s(v))),
         mean_omega_rad_s: physical.as_ref().and_then(|p| mean_omega.map(|v| p.rate_to_rad_s(v.abs()))),
     }
@@ -225,7 +234,7 @@ pub fn report(config: &RunConfig, sum: &Summary) -> String {
             ));
             let seed = [(1.0, "3.2", "1.1", "accelerating"), (2.0, "5.8", "1.0", "≈ neutral"), (4.0, "9.5", "0.75", "retarding")];
             if let Some((_, cl, lag, m)) = seed.iter().find(|(k, ..)| (rate.abs() - k).abs() < 1e-9) {
-                table.push(("max C_L".into(), fmt_opt(sum.max_cl, 2), (*cl).into()));
+                table.push(("max C_L".into(), fmt_opt(sum.peak_cl_rotation, 2), (*cl).into()));
                 table.push(("lag of max C_D (rad)".into(), fmt_opt(sum.lag_cd_behind_cl, 2), (*lag).into()));
                 let mine = sum.mean_cm.map(|m| if m * rate > 0.0 { "accelerating" } else { "retarding" }).unwrap_or("—");
                 table.push(("mean moment".into(), format!("{mine} ({})", fmt_opt(sum.mean_cm, 4)), (*m).into()));
@@ -247,7 +256,7 @@ pub fn report(config: &RunConfig, sum: &Summary) -> String {
                 table.push(("mean speed (ft/s)".into(), fmt_opt(sum.mean_speed_ft_s, 2), "3.01 (seed), 3.75 (experiment)".into()));
                 table.push(("mean rotation (rad/s)".into(), fmt_opt(sum.mean_omega_rad_s, 2), "19.56 (seed), 23.4 (experiment)".into()));
                 table.push(("mean flight-path angle (rad)".into(), fmt_opt(sum.mean_gamma, 3), "−0.20 (seed), −0.81 (experiment)".into()));
-                table.push(("max C_L in autorotation".into(), fmt_opt(sum.max_cl, 2), "≈ 6.2 (seed)".into()));
+                table.push(("max C_L in autorotation".into(), fmt_opt(sum.peak_cl_rotation, 2), "≈ 6.2 (seed)".into()));
             }
         }
     }
@@ -263,4 +272,33 @@ pub fn report(config: &RunConfig, sum: &Summary) -> String {
         }
     }
     r
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A plate turning at rate `om` with C_L peaking at θ = 1.0 and C_D at θ = 1.5 (mod π) for
+    /// counter-clockwise rotation, and the mirror image (C_L negated) for clockwise rotation.
+    fn turning(om: f64) -> Vec<StepSample> {
+        let dir = om.signum();
+        (0..20000)
+            .map(|k| {
+                let t = k as f64 * 0.001;
+                let th = om * t;
+                let phase = dir * th;
+                let bump = |c: f64| (-(((phase - c).rem_euclid(PI) - PI / 2.0).powi(2)) * 8.0).exp();
+                StepSample { t, theta: th, omega: om, cl: dir * bump(1.0 - PI / 2.0 + PI), cd: bump(1.5 - PI / 2.0 + PI), ..Default::default() }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn lag_of_drag_behind_lift_is_the_same_for_mirror_image_rotations() {
+        let w = Window { t0: 1.0, t1: 19.0 };
+        let ccw = lag_cd_behind_cl(&turning(2.0), w).unwrap();
+        let cw = lag_cd_behind_cl(&turning(-2.0), w).unwrap();
+        assert!((ccw - 0.5).abs() < 0.01, "counter-clockwise lag {ccw}");
+        assert!((cw - ccw).abs() < 0.01, "clockwise lag {cw} differs from {ccw}");
+    }
 }
