@@ -27,7 +27,11 @@ pub fn mean_over(samples: &[StepSample], w: Window, f: impl Fn(&StepSample) -> f
 }
 
 /// Largest and smallest of `f` inside the window.
-pub fn range_over(samples: &[StepSample], w: Window, f: impl Fn(&StepSample) -> f64) -> Option<(f64, f64)> {
+pub fn range_over(
+    samples: &[StepSample],
+    w: Window,
+    f: impl Fn(&StepSample) -> f64,
+) -> Option<(f64, f64)> {
     samples
         .iter()
         .filter(|s| s.t >= w.t0 - 1e-12 && s.t <= w.t1 + 1e-12)
@@ -39,7 +43,12 @@ pub fn range_over(samples: &[StepSample], w: Window, f: impl Fn(&StepSample) -> 
 }
 
 /// Resamples `f` onto a uniform grid of step `h` over the window (linear interpolation).
-fn resample(samples: &[StepSample], w: Window, h: f64, f: &impl Fn(&StepSample) -> f64) -> Vec<f64> {
+fn resample(
+    samples: &[StepSample],
+    w: Window,
+    h: f64,
+    f: &impl Fn(&StepSample) -> f64,
+) -> Vec<f64> {
     let n = ((w.t1 - w.t0) / h).floor() as usize + 1;
     let mut out = Vec::with_capacity(n);
     let mut k = 0;
@@ -49,7 +58,11 @@ fn resample(samples: &[StepSample], w: Window, h: f64, f: &impl Fn(&StepSample) 
             k += 1;
         }
         let (a, b) = (&samples[k], &samples[(k + 1).min(samples.len() - 1)]);
-        let s = if b.t > a.t { ((t - a.t) / (b.t - a.t)).clamp(0.0, 1.0) } else { 0.0 };
+        let s = if b.t > a.t {
+            ((t - a.t) / (b.t - a.t)).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
         out.push(f(a) + s * (f(b) - f(a)));
     }
     out
@@ -107,7 +120,11 @@ pub fn dominant_frequency(
     }
     let (pl, pr) = (power(best_f - df), power(best_f + df));
     let denom = pl - 2.0 * best_p + pr;
-    let shift = if denom.abs() > 0.0 { 0.5 * (pl - pr) / denom } else { 0.0 };
+    let shift = if denom.abs() > 0.0 {
+        0.5 * (pl - pr) / denom
+    } else {
+        0.0
+    };
     Some(best_f + shift.clamp(-0.5, 0.5) * df)
 }
 
@@ -115,7 +132,10 @@ pub fn dominant_frequency(
 pub fn whole_periods(w: Window, period: f64) -> Window {
     let n = ((w.t1 - w.t0) / period).floor();
     if n >= 1.0 {
-        Window { t0: w.t1 - n * period, t1: w.t1 }
+        Window {
+            t0: w.t1 - n * period,
+            t1: w.t1,
+        }
     } else {
         w
     }
@@ -133,9 +153,15 @@ pub struct Turns {
 }
 
 pub fn count_turns(samples: &[StepSample], t_release: f64) -> Turns {
-    let after: Vec<&StepSample> = samples.iter().filter(|s| s.t >= t_release - 1e-12).collect();
+    let after: Vec<&StepSample> = samples
+        .iter()
+        .filter(|s| s.t >= t_release - 1e-12)
+        .collect();
     let (Some(first), Some(last)) = (after.first(), after.last()) else {
-        return Turns { revolutions: 0.0, completed: vec![] };
+        return Turns {
+            revolutions: 0.0,
+            completed: vec![],
+        };
     };
     let revolutions = (last.theta - first.theta) / (2.0 * PI);
     let dir = if last.theta >= first.theta { 1.0 } else { -1.0 };
@@ -155,7 +181,10 @@ pub fn count_turns(samples: &[StepSample], t_release: f64) -> Turns {
             next += 2.0 * PI;
         }
     }
-    Turns { revolutions, completed }
+    Turns {
+        revolutions,
+        completed,
+    }
 }
 
 #[cfg(test)]
@@ -166,7 +195,12 @@ mod tests {
         (0..=((t_end / dt) as usize))
             .map(|k| {
                 let t = k as f64 * dt;
-                StepSample { t, cl: f(t), theta: f(t), ..Default::default() }
+                StepSample {
+                    t,
+                    cl: f(t),
+                    theta: f(t),
+                    ..Default::default()
+                }
             })
             .collect()
     }
@@ -194,7 +228,11 @@ mod tests {
     #[test]
     fn turns_are_counted_from_a_reversal() {
         // θ dips to −1 then rises steadily by 3 turns.
-        let s = series(|t| if t < 1.0 { -t } else { -1.0 + (t - 1.0) * 2.0 }, 11.0, 0.001);
+        let s = series(
+            |t| if t < 1.0 { -t } else { -1.0 + (t - 1.0) * 2.0 },
+            11.0,
+            0.001,
+        );
         let turns = count_turns(&s, 0.0);
         assert_eq!(turns.completed.len(), 3);
         assert!((turns.completed[0] - (1.0 + PI)).abs() < 2e-3);

@@ -31,10 +31,18 @@ pub fn bench_one(resolution: usize, steps: usize) -> Result<BenchRow, String> {
     let spec = GridSpec::modern(resolution);
     let grid = Grid::new(&spec).map_err(|e| e.0)?;
     let (nx, ny, cells) = (grid.nx, grid.ny, grid.cells());
-    let case = Case::Forced { rate: 1.0, spinup: 0.0 };
+    let case = Case::Forced {
+        rate: 1.0,
+        spinup: 0.0,
+    };
     let t0 = Instant::now();
-    let mut flow = FlowSolver::new(grid, FlowParams::default(), OuterBc::FarField, frame_of(&prescribed_state(&case, 0.4)))
-        .map_err(|e| e.to_string())?;
+    let mut flow = FlowSolver::new(
+        grid,
+        FlowParams::default(),
+        OuterBc::FarField,
+        frame_of(&prescribed_state(&case, 0.4)),
+    )
+    .map_err(|e| e.to_string())?;
     let setup_seconds = t0.elapsed().as_secs_f64();
     let (mut t_mom, mut t_proj) = (0.0, 0.0);
     for k in 0..steps + 5 {

@@ -15,7 +15,13 @@ use crate::record::options::RecordArgs;
 /// All quantities are non-dimensional: lengths on the chord c, speeds on the reference speed U,
 /// time on c/U (one "convective time").
 #[derive(Parser, Debug)]
-#[command(name = "platefall", version, about, long_about, propagate_version = true)]
+#[command(
+    name = "platefall",
+    version,
+    about,
+    long_about,
+    propagate_version = true
+)]
 pub struct Cli {
     #[command(subcommand)]
     pub command: Command,
@@ -204,18 +210,31 @@ impl SolverArgs {
         }
         GridSpec {
             resolution: self.resolution,
-            thickness: self.thickness.unwrap_or(1.0 / self.resolution.max(1) as f64),
+            thickness: self
+                .thickness
+                .unwrap_or(1.0 / self.resolution.max(1) as f64),
             extent_x: self.extent,
             extent_y: self.extent,
             stretch: Stretch::GrowthCap(self.growth),
         }
     }
 
-    fn config(&self, case: Case, default_re: f64, default_t_end: f64, body: Option<BodyConfig>, turns: Option<f64>) -> RunConfig {
+    fn config(
+        &self,
+        case: Case,
+        default_re: f64,
+        default_t_end: f64,
+        body: Option<BodyConfig>,
+        turns: Option<f64>,
+    ) -> RunConfig {
         RunConfig {
             case,
             grid: self.grid(),
-            flow: FlowParams { re: self.re.unwrap_or(default_re), cfl: self.cfl, ..FlowParams::default() },
+            flow: FlowParams {
+                re: self.re.unwrap_or(default_re),
+                cfl: self.cfl,
+                ..FlowParams::default()
+            },
             body,
             t_end: self.t_end.unwrap_or(default_t_end),
             turns,
@@ -231,12 +250,18 @@ impl BodyArgs {
         let (preset, base, re) = match self.preset {
             Preset::Card => {
                 let card = PhysicalPlate::card();
-                (Some("card".to_string()), Some(card.props()), Some(card.reynolds()))
+                (
+                    Some("card".to_string()),
+                    Some(card.props()),
+                    Some(card.reynolds()),
+                )
             }
             Preset::None => (None, None, None),
         };
         let pick = |name: &str, given: Option<f64>, from: Option<f64>| {
-            given.or(from).ok_or_else(|| ConfigError(format!("{name} is required with --preset none")))
+            given
+                .or(from)
+                .ok_or_else(|| ConfigError(format!("{name} is required with --preset none")))
         };
         let props = PlateProps {
             mass: pick("--mass", self.mass, base.map(|b| b.mass))?,
@@ -247,29 +272,77 @@ impl BodyArgs {
             AbStartArg::Ramp => AbStart::Ramp,
             AbStartArg::Extrapolate => AbStart::Extrapolate,
         };
-        Ok((BodyConfig { preset, props, ab_order: self.ab_order, ab_start: start }, re))
+        Ok((
+            BodyConfig {
+                preset,
+                props,
+                ab_order: self.ab_order,
+                ab_start: start,
+            },
+            re,
+        ))
     }
 }
 
 /// The run configuration of a case subcommand, validated.
 pub fn run_config(cmd: &Command) -> Result<RunConfig, ConfigError> {
     let cfg = match cmd {
-        Command::Static(a) => a.solver.config(Case::Static { alpha: a.alpha, kick: a.kick }, 5000.0, 80.0, None, None),
+        Command::Static(a) => a.solver.config(
+            Case::Static {
+                alpha: a.alpha,
+                kick: a.kick,
+            },
+            5000.0,
+            80.0,
+            None,
+            None,
+        ),
         Command::Forced(a) => {
             let t_end = a.spinup + 6.0 * std::f64::consts::PI / a.rate.abs().max(1e-3);
-            a.solver.config(Case::Forced { rate: a.rate, spinup: a.spinup }, 5000.0, t_end.min(200.0), None, None)
+            a.solver.config(
+                Case::Forced {
+                    rate: a.rate,
+                    spinup: a.spinup,
+                },
+                5000.0,
+                t_end.min(200.0),
+                None,
+                None,
+            )
         }
         Command::Pinned(a) => {
             let (body, re) = a.body.resolve()?;
-            let re = a.solver.re.or(re).ok_or_else(|| ConfigError("--re is required with --preset none".into()))?;
-            let case = Case::Pinned { alpha0: a.alpha0, develop: a.body.develop };
+            let re = a
+                .solver
+                .re
+                .or(re)
+                .ok_or_else(|| ConfigError("--re is required with --preset none".into()))?;
+            let case = Case::Pinned {
+                alpha0: a.alpha0,
+                develop: a.body.develop,
+            };
             a.solver.config(case, re, 60.0, Some(body), a.body.turns)
         }
         Command::Free(a) => {
             let (body, re) = a.body.resolve()?;
-            let re = a.solver.re.or(re).ok_or_else(|| ConfigError("--re is required with --preset none".into()))?;
-            let case = Case::Free { v0: a.v0, gamma0: a.gamma0, alpha0: a.alpha0, develop: a.body.develop };
-            a.solver.config(case, re, 80.0, Some(body), Some(a.body.turns.unwrap_or(10.0)))
+            let re = a
+                .solver
+                .re
+                .or(re)
+                .ok_or_else(|| ConfigError("--re is required with --preset none".into()))?;
+            let case = Case::Free {
+                v0: a.v0,
+                gamma0: a.gamma0,
+                alpha0: a.alpha0,
+                develop: a.body.develop,
+            };
+            a.solver.config(
+                case,
+                re,
+                80.0,
+                Some(body),
+                Some(a.body.turns.unwrap_or(10.0)),
+            )
         }
         Command::Bench(_) => return Err(ConfigError("bench has no run configuration".into())),
     };

@@ -23,7 +23,12 @@ pub enum Case {
     /// C: translates at U, free to rotate about its centre; held at α₀ for `develop`, then released.
     Pinned { alpha0: f64, develop: f64 },
     /// D: moves at V₀ along γ₀ at α₀ for `develop`, then falls freely (3 DOF, gravity).
-    Free { v0: f64, gamma0: f64, alpha0: f64, develop: f64 },
+    Free {
+        v0: f64,
+        gamma0: f64,
+        alpha0: f64,
+        develop: f64,
+    },
 }
 
 impl Case {
@@ -81,13 +86,21 @@ impl std::fmt::Display for ConfigError {
 impl std::error::Error for ConfigError {}
 
 /// Checks that `value` is finite and in [lo, hi] (or (lo, hi] when `open_lo`).
-pub fn check_range(name: &str, value: f64, lo: f64, hi: f64, open_lo: bool) -> Result<(), ConfigError> {
+pub fn check_range(
+    name: &str,
+    value: f64,
+    lo: f64,
+    hi: f64,
+    open_lo: bool,
+) -> Result<(), ConfigError> {
     let ok = value.is_finite() && value <= hi && if open_lo { value > lo } else { value >= lo };
     if ok {
         Ok(())
     } else {
         let open = if open_lo { "(" } else { "[" };
-        Err(ConfigError(format!("{name} = {value} is out of range: accepted {open}{lo}, {hi}]")))
+        Err(ConfigError(format!(
+            "{name} = {value} is out of range: accepted {open}{lo}, {hi}]"
+        )))
     }
 }
 
@@ -116,7 +129,12 @@ impl RunConfig {
                 check_range("--alpha0 (rad)", alpha0, -PI, PI, false)?;
                 check_range("--develop", develop, 0.0, 1e3, false)?;
             }
-            Case::Free { v0, gamma0, alpha0, develop } => {
+            Case::Free {
+                v0,
+                gamma0,
+                alpha0,
+                develop,
+            } => {
                 check_range("--v0 (on the reference speed)", v0, 0.0, 10.0, false)?;
                 check_range("--gamma0 (rad)", gamma0, -PI, PI, false)?;
                 check_range("--alpha0 (rad)", alpha0, -PI, PI, false)?;
@@ -132,7 +150,10 @@ impl RunConfig {
             check_range("--inertia (I*)", b.props.inertia, 0.0, 1e6, true)?;
             check_range("--gravity (g*)", b.props.gravity, 0.0, 1e3, false)?;
             if !(1..=6).contains(&b.ab_order) {
-                return Err(ConfigError(format!("--ab-order = {} is out of range: accepted 1..=6", b.ab_order)));
+                return Err(ConfigError(format!(
+                    "--ab-order = {} is out of range: accepted 1..=6",
+                    b.ab_order
+                )));
             }
             crate::body::coupling_check(&b.props).map_err(ConfigError)?;
         }
@@ -143,9 +164,15 @@ impl RunConfig {
     pub fn title(&self) -> String {
         let case = match &self.case {
             Case::Static { alpha, .. } => format!("static plate, α = {alpha:.4} rad"),
-            Case::Forced { rate, spinup } => format!("forced rotation, θ̇ = {rate}, spin-up {spinup}"),
-            Case::Pinned { alpha0, .. } => format!("pinned autorotation, released at α₀ = {alpha0}"),
-            Case::Free { v0, gamma0, alpha0, .. } => {
+            Case::Forced { rate, spinup } => {
+                format!("forced rotation, θ̇ = {rate}, spin-up {spinup}")
+            }
+            Case::Pinned { alpha0, .. } => {
+                format!("pinned autorotation, released at α₀ = {alpha0}")
+            }
+            Case::Free {
+                v0, gamma0, alpha0, ..
+            } => {
                 format!("free fall, V₀ = {v0}, γ₀ = {gamma0:.4}, α₀ = {alpha0}")
             }
         };
@@ -155,7 +182,10 @@ impl RunConfig {
             .and_then(|b| b.preset.as_deref())
             .map(|p| format!(", {p} preset"))
             .unwrap_or_default();
-        format!("{case}{preset}, Re {:.0}, N = {}", self.flow.re, self.grid.resolution)
+        format!(
+            "{case}{preset}, Re {:.0}, N = {}",
+            self.flow.re, self.grid.resolution
+        )
     }
 
     /// The card preset's physical plate when this run uses it (for physical units in reports).

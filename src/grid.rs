@@ -78,7 +78,9 @@ impl GridSpec {
     pub fn validate(&self) -> Result<(), GridError> {
         let n = self.resolution;
         if !(4..=1024).contains(&n) {
-            return Err(GridError(format!("resolution {n} is out of range: cells per chord must be in 4..=1024")));
+            return Err(GridError(format!(
+                "resolution {n} is out of range: cells per chord must be in 4..=1024"
+            )));
         }
         let h = 1.0 / n as f64;
         if !(self.thickness.is_finite() && self.thickness > 0.0 && self.thickness <= 0.5) {
@@ -89,13 +91,17 @@ impl GridSpec {
         }
         for (name, e) in [("extent_x", self.extent_x), ("extent_y", self.extent_y)] {
             if !(e.is_finite() && (1.0..=200.0).contains(&e)) {
-                return Err(GridError(format!("{name} {e} is out of range: must be in [1, 200] chords")));
+                return Err(GridError(format!(
+                    "{name} {e} is out of range: must be in [1, 200] chords"
+                )));
             }
         }
         match self.stretch {
             Stretch::GrowthCap(r) => {
                 if !(r.is_finite() && r > 1.0 && r <= 1.5) {
-                    return Err(GridError(format!("growth cap {r} is out of range: must be in (1, 1.5]")));
+                    return Err(GridError(format!(
+                        "growth cap {r} is out of range: must be in (1, 1.5]"
+                    )));
                 }
             }
             Stretch::Intervals { nx, ny } => {
@@ -162,7 +168,9 @@ pub fn stretched_offsets(h: f64, length: f64, n: usize) -> Vec<f64> {
     match stretch_coefficient(h, length, n) {
         Some(c) => {
             let denom = c.exp_m1();
-            (0..=n).map(|k| length * (c * k as f64 / n as f64).exp_m1() / denom).collect()
+            (0..=n)
+                .map(|k| length * (c * k as f64 / n as f64).exp_m1() / denom)
+                .collect()
         }
         // n h ≥ L: uniform spacing L/n (no stretching needed).
         None => (0..=n).map(|k| length * k as f64 / n as f64).collect(),
@@ -227,7 +235,11 @@ impl Grid {
         let yn = axis(0.5 * thickness, n_thick, spec.extent_y, nsy);
         let nx = xn.len() - 1;
         let ny = yn.len() - 1;
-        let centres = |v: &[f64]| v.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect::<Vec<_>>();
+        let centres = |v: &[f64]| {
+            v.windows(2)
+                .map(|w| 0.5 * (w[0] + w[1]))
+                .collect::<Vec<_>>()
+        };
         let widths = |v: &[f64]| v.windows(2).map(|w| w[1] - w[0]).collect::<Vec<_>>();
         Ok(Grid {
             spec: spec.clone(),
@@ -302,6 +314,10 @@ impl Grid {
 
     /// The plain-data geometry for recording and post-processing.
     pub fn geometry(&self) -> crate::record::messages::GridGeometry {
-        crate::record::messages::GridGeometry { xn: self.xn.clone(), yn: self.yn.clone(), solid: self.solid_mask() }
+        crate::record::messages::GridGeometry {
+            xn: self.xn.clone(),
+            yn: self.yn.clone(),
+            solid: self.solid_mask(),
+        }
     }
 }

@@ -56,13 +56,25 @@ fn summary_path(cmd: &Command) -> Option<&Path> {
 
 /// Checks that a file can be created at `path` without leaving anything behind.
 fn check_writable(flag: &str, path: &Path) -> anyhow::Result<()> {
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
     if !dir.is_dir() {
-        anyhow::bail!("{flag} {}: directory {} does not exist", path.display(), dir.display());
+        anyhow::bail!(
+            "{flag} {}: directory {} does not exist",
+            path.display(),
+            dir.display()
+        );
     }
     let probe = dir.join(format!(".platefall-probe-{}", std::process::id()));
-    std::fs::File::create(&probe)
-        .map_err(|e| anyhow::anyhow!("{flag} {}: cannot write in {} ({e})", path.display(), dir.display()))?;
+    std::fs::File::create(&probe).map_err(|e| {
+        anyhow::anyhow!(
+            "{flag} {}: cannot write in {} ({e})",
+            path.display(),
+            dir.display()
+        )
+    })?;
     let _ = std::fs::remove_file(probe);
     Ok(())
 }
@@ -71,7 +83,9 @@ fn check_writable(flag: &str, path: &Path) -> anyhow::Result<()> {
 fn command_line() -> String {
     std::env::args()
         .map(|a| {
-            if a.chars().all(|c| c.is_ascii_alphanumeric() || "-_./=:,+".contains(c)) {
+            if a.chars()
+                .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+".contains(c))
+            {
                 a
             } else {
                 format!("'{}'", a.replace('\'', "'\\''"))
@@ -116,7 +130,11 @@ fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     }
     // A run that stops after a number of turns has no known end time: show no ETA rather than a
     // wrong one.
-    let progress_end = if config.turns.is_some() { f64::NAN } else { config.t_end };
+    let progress_end = if config.turns.is_some() {
+        f64::NAN
+    } else {
+        config.t_end
+    };
     let opts = record_args(cmd).resolve(case, progress_end)?;
     if let Some(b) = &config.body {
         if let Some(advice) = platefall::body::coupling_advice(&b.props) {
@@ -152,7 +170,11 @@ fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     // The solver runs on its own thread; this thread waits for it.
     let (rec, lost) = std::thread::scope(|scope| {
         let handle = scope.spawn(|| {
-            let mut fwd = Forward { logger: &mut logger, stop: &stop, lost: None };
+            let mut fwd = Forward {
+                logger: &mut logger,
+                stop: &stop,
+                lost: None,
+            };
             let rec = sim.run(&mut fwd);
             (rec, fwd.lost)
         });
@@ -163,9 +185,14 @@ fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     let text = report(&config, &summary);
     let summary_json = serde_json::to_string_pretty(&summary)?;
     if let Some(p) = summary_path(cmd) {
-        write_atomically(p, summary_json.as_bytes()).with_context(|| format!("writing --summary {}", p.display()))?;
+        write_atomically(p, summary_json.as_bytes())
+            .with_context(|| format!("writing --summary {}", p.display()))?;
     }
-    let outcome = RunOutcome { status: rec.status.clone(), summary_json, report: text.clone() };
+    let outcome = RunOutcome {
+        status: rec.status.clone(),
+        summary_json,
+        report: text.clone(),
+    };
     let log_report = logger.finish(outcome)?;
     eprintln!();
     print!("{text}");
@@ -183,7 +210,10 @@ fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
             ExitCode::from(3)
         }
         RunStatus::Interrupted => {
-            eprintln!("interrupted: the recording and summary hold the run up to t = {:.3}", summary.t_end);
+            eprintln!(
+                "interrupted: the recording and summary hold the run up to t = {:.3}",
+                summary.t_end
+            );
             ExitCode::from(130)
         }
     };
@@ -213,7 +243,14 @@ fn bench(args: &BenchArgs) -> anyhow::Result<()> {
     for &n in &args.resolutions {
         let row = platefall::bench::bench_one(n, args.steps).map_err(|e| anyhow::anyhow!(e))?;
         rows.push(row);
-        eprint!("{}", platefall::bench::table(&rows).lines().last().map(|l| format!("{l}\n")).unwrap_or_default());
+        eprint!(
+            "{}",
+            platefall::bench::table(&rows)
+                .lines()
+                .last()
+                .map(|l| format!("{l}\n"))
+                .unwrap_or_default()
+        );
     }
     print!("{}", platefall::bench::table(&rows));
     if let Some(p) = &args.json {

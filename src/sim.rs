@@ -5,7 +5,9 @@
 use std::f64::consts::PI;
 use std::time::Instant;
 
-use crate::body::{inertial_to_body, wrap_angle, AbStart, BodyState, Dof, Loads as BodyLoads, RigidBody};
+use crate::body::{
+    inertial_to_body, wrap_angle, AbStart, BodyState, Dof, Loads as BodyLoads, RigidBody,
+};
 use crate::config::{Case, RunConfig};
 use crate::flow::{FlowError, FlowSolver, Frame, OuterBc};
 use crate::grid::Grid;
@@ -38,7 +40,12 @@ enum Motion {
     /// A formula of time (cases A, B).
     Prescribed,
     /// Held on a formula until `release`, then integrated (cases C, D).
-    Coupled { body: RigidBody, release: f64, dof: Dof, released: bool },
+    Coupled {
+        body: RigidBody,
+        release: f64,
+        dof: Dof,
+        released: bool,
+    },
 }
 
 pub struct Simulation {
@@ -54,18 +61,41 @@ impl Simulation {
         config.validate().map_err(|e| e.0)?;
         let grid = Grid::new(&config.grid).map_err(|e| e.0)?;
         let state = prescribed_state(&config.case, 0.0);
-        let flow = FlowSolver::new(grid, config.flow.clone(), OuterBc::FarField, frame_of(&state)).map_err(|e| e.to_string())?;
+        let flow = FlowSolver::new(
+            grid,
+            config.flow.clone(),
+            OuterBc::FarField,
+            frame_of(&state),
+        )
+        .map_err(|e| e.to_string())?;
         let motion = match &config.case {
             Case::Static { .. } | Case::Forced { .. } => Motion::Prescribed,
             Case::Pinned { develop, .. } | Case::Free { develop, .. } => {
-                let b = config.body.as_ref().ok_or("a coupled case needs plate properties")?;
-                let dof = if matches!(config.case, Case::Pinned { .. }) { Dof::PitchOnly } else { Dof::Free };
+                let b = config
+                    .body
+                    .as_ref()
+                    .ok_or("a coupled case needs plate properties")?;
+                let dof = if matches!(config.case, Case::Pinned { .. }) {
+                    Dof::PitchOnly
+                } else {
+                    Dof::Free
+                };
                 let body = RigidBody::new(b.props, Dof::Prescribed, state, b.ab_order, b.ab_start)
                     .map_err(|e| e.to_string())?;
-                Motion::Coupled { body, release: *develop, dof, released: false }
+                Motion::Coupled {
+                    body,
+                    release: *develop,
+                    dof,
+                    released: false,
+                }
             }
         };
-        Ok(Simulation { config, flow, state, motion })
+        Ok(Simulation {
+            config,
+            flow,
+            state,
+            motion,
+        })
     }
 
     /// The release time (coupled), end of spin-up (forced) or 0.
@@ -154,14 +184,24 @@ impl Simulation {
         let loads = self.flow.loads();
         let next = match &mut self.motion {
             Motion::Prescribed => prescribed_state(&self.config.case, t + dt),
-            Motion::Coupled { body, release, dof, released } => {
+            Motion::Coupled {
+                body,
+                release,
+                dof,
+                released,
+            } => {
                 if !*released && t >= *release - 1e-9 {
                     *released = true;
                     body.state = self.state;
                     body.set_dof(*dof);
                 }
                 if *released {
-                    let l = BodyLoads::from_body_axes(self.state.theta, loads.fx, loads.fy, loads.moment);
+                    let l = BodyLoads::from_body_axes(
+                        self.state.theta,
+                        loads.fx,
+                        loads.fy,
+                        loads.moment,
+                    );
                     body.step(t, &l, dt);
                     body.state
                 } else {
@@ -169,8 +209,15 @@ impl Simulation {
                 }
             }
         };
-        if !(next.x.is_finite() && next.y.is_finite() && next.theta.is_finite() && next.omega.is_finite()) {
-            return Err(FlowError::Diverged(format!("the plate's motion is not finite at t = {:.4}", t + dt)));
+        if !(next.x.is_finite()
+            && next.y.is_finite()
+            && next.theta.is_finite()
+            && next.omega.is_finite())
+        {
+            return Err(FlowError::Diverged(format!(
+                "the plate's motion is not finite at t = {:.4}",
+                t + dt
+            )));
         }
         self.flow.advance(dt, frame_of(&next))?;
         self.state = next;
@@ -202,7 +249,10 @@ impl Simulation {
                 Ok(s) => {
                     obs.step(&s);
                     samples.push(s);
-                    if theta_release.is_none() && self.config.case.is_coupled() && s.t >= release - 1e-9 {
+                    if theta_release.is_none()
+                        && self.config.case.is_coupled()
+                        && s.t >= release - 1e-9
+                    {
                         theta_release = Some(s.theta);
                     }
                     if obs.wants_field(s.t) {
@@ -212,7 +262,9 @@ impl Simulation {
                         break RunStatus::Completed;
                     }
                 }
-                Err(FlowError::Diverged(msg)) | Err(FlowError::Setup(msg)) => break RunStatus::Diverged(msg),
+                Err(FlowError::Diverged(msg)) | Err(FlowError::Setup(msg)) => {
+                    break RunStatus::Diverged(msg)
+                }
             }
         };
         RunRecord {
@@ -228,7 +280,11 @@ impl Simulation {
 /// The flow solver's view of the motion: the centre's velocity in body axes and θ̇ (SPEC §3).
 pub fn frame_of(s: &BodyState) -> Frame {
     let (a, b) = inertial_to_body(s.theta, s.xdot, s.ydot);
-    Frame { a, b, omega: s.omega }
+    Frame {
+        a,
+        b,
+        omega: s.omega,
+    }
 }
 
 /// The prescribed motion at time t: cases A and B, and the development phase of C and D.
@@ -263,7 +319,9 @@ pub fn prescribed_state(case: &Case, t: f64) -> BodyState {
             translate(1.0, 0.0, theta, omega)
         }
         Case::Pinned { alpha0, .. } => translate(1.0, 0.0, alpha0, 0.0),
-        Case::Free { v0, gamma0, alpha0, .. } => translate(v0, gamma0, gamma0 + alpha0, 0.0),
+        Case::Free {
+            v0, gamma0, alpha0, ..
+        } => translate(v0, gamma0, gamma0 + alpha0, 0.0),
     }
 }
 

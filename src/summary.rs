@@ -4,7 +4,9 @@ use std::f64::consts::PI;
 
 use serde::Serialize;
 
-use crate::analysis::{count_turns, dominant_frequency, mean_over, range_over, whole_periods, Window};
+use crate::analysis::{
+    count_turns, dominant_frequency, mean_over, range_over, whole_periods, Window,
+};
 use crate::config::{Case, RunConfig};
 use crate::record::messages::{RunStatus, StepSample};
 use crate::sim::RunRecord;
@@ -64,23 +66,47 @@ fn status_name(s: &RunStatus) -> String {
 /// The developed window: for coupled cases the whole turns after autorotation is established (the
 /// first complete turn after release); for forced rotation the whole half-turns after spin-up plus
 /// one half-turn; for the static case the second half of the run, trimmed to whole lift periods.
-fn developed(config: &RunConfig, rec: &RunRecord, freq: Option<f64>) -> (Option<Window>, String, Option<f64>) {
-    let Some(last) = rec.samples.last() else { return (None, "no steps".into(), None) };
+fn developed(
+    config: &RunConfig,
+    rec: &RunRecord,
+    freq: Option<f64>,
+) -> (Option<Window>, String, Option<f64>) {
+    let Some(last) = rec.samples.last() else {
+        return (None, "no steps".into(), None);
+    };
     match &config.case {
         Case::Static { .. } => {
-            let w = Window { t0: 0.5 * last.t, t1: last.t };
+            let w = Window {
+                t0: 0.5 * last.t,
+                t1: last.t,
+            };
             match freq {
-                Some(f) => (Some(whole_periods(w, 1.0 / f)), "second half of the run, whole lift periods".into(), None),
+                Some(f) => (
+                    Some(whole_periods(w, 1.0 / f)),
+                    "second half of the run, whole lift periods".into(),
+                    None,
+                ),
                 None => (Some(w), "second half of the run (steady)".into(), None),
             }
         }
         Case::Forced { rate, spinup } => {
             let half_turn = PI / rate.abs();
-            let w = Window { t0: spinup + half_turn, t1: last.t };
+            let w = Window {
+                t0: spinup + half_turn,
+                t1: last.t,
+            };
             if w.t1 - w.t0 < half_turn {
-                return (None, "shorter than one half-turn after spin-up".into(), None);
+                return (
+                    None,
+                    "shorter than one half-turn after spin-up".into(),
+                    None,
+                );
             }
-            (Some(whole_periods(w, half_turn)), "whole half-turns after spin-up + one half-turn".into(), None)
+            (
+                Some(whole_periods(w, half_turn)),
+                "whole half-turns after spin-up + one half-turn".into(),
+                None,
+            )
         }
         Case::Pinned { .. } | Case::Free { .. } => {
             let turns = count_turns(&rec.samples, rec.t_release);
@@ -89,7 +115,11 @@ fn developed(config: &RunConfig, rec: &RunRecord, freq: Option<f64>) -> (Option<
                 (Some(a), Some(&b)) if b > a => Some(Window { t0: a, t1: b }),
                 _ => None,
             };
-            (w, "whole turns after the first complete turn following release".into(), established)
+            (
+                w,
+                "whole turns after the first complete turn following release".into(),
+                established,
+            )
         }
     }
 }
@@ -98,9 +128,16 @@ fn developed(config: &RunConfig, rec: &RunRecord, freq: Option<f64>) -> (Option<
 /// For clockwise rotation the lift is taken in the rotation's own sense (−C_L): the mirror image
 /// y → −y of a counter-clockwise run turns clockwise with C_L negated and C_D unchanged.
 fn lag_cd_behind_cl(samples: &[StepSample], w: Window) -> Option<f64> {
-    let inside: Vec<&StepSample> = samples.iter().filter(|s| s.t >= w.t0 && s.t <= w.t1).collect();
+    let inside: Vec<&StepSample> = samples
+        .iter()
+        .filter(|s| s.t >= w.t0 && s.t <= w.t1)
+        .collect();
     let first = inside.first()?;
-    let dir = if inside.last()?.theta >= first.theta { 1.0 } else { -1.0 };
+    let dir = if inside.last()?.theta >= first.theta {
+        1.0
+    } else {
+        -1.0
+    };
     let mut lags = Vec::new();
     let mut k0 = 0;
     for k in 1..=inside.len() {
@@ -108,7 +145,10 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: Window) -> Option<f64> {
         if end {
             let seg = &inside[k0..k];
             if k < inside.len() || dir * (seg.last()?.theta - seg[0].theta) >= PI * 0.999 {
-                let a_cl = seg.iter().max_by(|a, b| (dir * a.cl).total_cmp(&(dir * b.cl)))?.theta;
+                let a_cl = seg
+                    .iter()
+                    .max_by(|a, b| (dir * a.cl).total_cmp(&(dir * b.cl)))?
+                    .theta;
                 let a_cd = seg.iter().max_by(|a, b| a.cd.total_cmp(&b.cd))?.theta;
                 lags.push((dir * (a_cd - a_cl)).rem_euclid(PI));
             }
@@ -121,7 +161,10 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: Window) -> Option<f64> {
 pub fn summarize(config: &RunConfig, rec: &RunRecord) -> Summary {
     let s = &rec.samples;
     let last_t = s.last().map(|x| x.t).unwrap_or(0.0);
-    let provisional = Window { t0: 0.5 * last_t, t1: last_t };
+    let provisional = Window {
+        t0: 0.5 * last_t,
+        t1: last_t,
+    };
     let freq = match config.case {
         Case::Static { .. } => dominant_frequency(s, provisional, STEADY_BAND, |x| x.cl),
         _ => None,
@@ -164,20 +207,30 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord) -> Summary {
         mean_gamma: if coupled { mean(|x| x.gamma) } else { None },
         revolutions: moving.then(|| count_turns(s, rec.t_release).revolutions),
         autorotation_time: established,
-        autorotation_rule: coupled
-            .then(|| "time of the first complete net turn after release (counted from any reversal)".into()),
-        lag_cd_behind_cl: if moving { w.and_then(|w| lag_cd_behind_cl(s, w)) } else { None },
+        autorotation_rule: coupled.then(|| {
+            "time of the first complete net turn after release (counted from any reversal)".into()
+        }),
+        lag_cd_behind_cl: if moving {
+            w.and_then(|w| lag_cd_behind_cl(s, w))
+        } else {
+            None
+        },
         peak_cl_rotation: match (moving, mean_omega, cl_range) {
             (true, Some(om), Some((lo, hi))) => Some(if om >= 0.0 { hi } else { -lo }),
             _ => None,
         },
-        mean_speed_ft_s: physical.as_ref().and_then(|p| mean_speed.map(|v| p.speed_to_ft_s(v))),
-        mean_omega_rad_s: physical.as_ref().and_then(|p| mean_omega.map(|v| p.rate_to_rad_s(v.abs()))),
+        mean_speed_ft_s: physical
+            .as_ref()
+            .and_then(|p| mean_speed.map(|v| p.speed_to_ft_s(v))),
+        mean_omega_rad_s: physical
+            .as_ref()
+            .and_then(|p| mean_omega.map(|v| p.rate_to_rad_s(v.abs()))),
     }
 }
 
 fn fmt_opt(x: Option<f64>, digits: usize) -> String {
-    x.map(|v| format!("{v:.digits$}")).unwrap_or_else(|| "—".into())
+    x.map(|v| format!("{v:.digits$}"))
+        .unwrap_or_else(|| "—".into())
 }
 
 /// The end-of-run report: the run's figures and the SPEC §8 comparison for its case.
@@ -217,13 +270,29 @@ pub fn report(config: &RunConfig, sum: &Summary) -> String {
                 fmt_opt(sum.strouhal_width, 3)
             ));
             if (alpha - 0.4).abs() < 0.05 {
-                table.push(("Strouhal (chord / width)".into(), format!("{} / {}", fmt_opt(sum.strouhal_chord, 3), fmt_opt(sum.strouhal_width, 3)), "0.34 / 0.13".into()));
+                table.push((
+                    "Strouhal (chord / width)".into(),
+                    format!(
+                        "{} / {}",
+                        fmt_opt(sum.strouhal_chord, 3),
+                        fmt_opt(sum.strouhal_width, 3)
+                    ),
+                    "0.34 / 0.13".into(),
+                ));
             }
             if (alpha - PI / 2.0).abs() < 0.05 {
-                table.push(("mean C_D".into(), fmt_opt(sum.mean_cd, 3), "1.494 (seed, symmetric wake); 1.4 experiment".into()));
+                table.push((
+                    "mean C_D".into(),
+                    fmt_opt(sum.mean_cd, 3),
+                    "1.494 (seed, symmetric wake); 1.4 experiment".into(),
+                ));
             }
             if alpha.abs() <= 0.16 {
-                table.push(("C_L (steady up to α ≈ 0.15)".into(), fmt_opt(sum.mean_cl, 3), "≈ 0.44 at α = 0.15".into()));
+                table.push((
+                    "C_L (steady up to α ≈ 0.15)".into(),
+                    fmt_opt(sum.mean_cl, 3),
+                    "≈ 0.44 at α = 0.15".into(),
+                ));
             }
         }
         Case::Forced { rate, .. } => {
@@ -232,12 +301,38 @@ pub fn report(config: &RunConfig, sum: &Summary) -> String {
                 fmt_opt(sum.lag_cd_behind_cl, 2),
                 fmt_opt(sum.mean_cm, 4)
             ));
-            let seed = [(1.0, "3.2", "1.1", "accelerating"), (2.0, "5.8", "1.0", "≈ neutral"), (4.0, "9.5", "0.75", "retarding")];
-            if let Some((_, cl, lag, m)) = seed.iter().find(|(k, ..)| (rate.abs() - k).abs() < 1e-9) {
-                table.push(("max C_L".into(), fmt_opt(sum.peak_cl_rotation, 2), (*cl).into()));
-                table.push(("lag of max C_D (rad)".into(), fmt_opt(sum.lag_cd_behind_cl, 2), (*lag).into()));
-                let mine = sum.mean_cm.map(|m| if m * rate > 0.0 { "accelerating" } else { "retarding" }).unwrap_or("—");
-                table.push(("mean moment".into(), format!("{mine} ({})", fmt_opt(sum.mean_cm, 4)), (*m).into()));
+            let seed = [
+                (1.0, "3.2", "1.1", "accelerating"),
+                (2.0, "5.8", "1.0", "≈ neutral"),
+                (4.0, "9.5", "0.75", "retarding"),
+            ];
+            if let Some((_, cl, lag, m)) = seed.iter().find(|(k, ..)| (rate.abs() - k).abs() < 1e-9)
+            {
+                table.push((
+                    "max C_L".into(),
+                    fmt_opt(sum.peak_cl_rotation, 2),
+                    (*cl).into(),
+                ));
+                table.push((
+                    "lag of max C_D (rad)".into(),
+                    fmt_opt(sum.lag_cd_behind_cl, 2),
+                    (*lag).into(),
+                ));
+                let mine = sum
+                    .mean_cm
+                    .map(|m| {
+                        if m * rate > 0.0 {
+                            "accelerating"
+                        } else {
+                            "retarding"
+                        }
+                    })
+                    .unwrap_or("—");
+                table.push((
+                    "mean moment".into(),
+                    format!("{mine} ({})", fmt_opt(sum.mean_cm, 4)),
+                    (*m).into(),
+                ));
             }
         }
         Case::Pinned { .. } | Case::Free { .. } => {
@@ -250,25 +345,61 @@ pub fn report(config: &RunConfig, sum: &Summary) -> String {
                 fmt_opt(sum.mean_gamma, 3)
             ));
             if matches!(config.case, Case::Pinned { .. }) {
-                table.push(("mean θ̇ (c/U)".into(), fmt_opt(sum.mean_omega.map(f64::abs), 3), "1.58".into()));
-                table.push(("lag of max C_D behind max C_L".into(), fmt_opt(sum.lag_cd_behind_cl, 2), "0.70 rad".into()));
+                table.push((
+                    "mean θ̇ (c/U)".into(),
+                    fmt_opt(sum.mean_omega.map(f64::abs), 3),
+                    "1.58".into(),
+                ));
+                table.push((
+                    "lag of max C_D behind max C_L".into(),
+                    fmt_opt(sum.lag_cd_behind_cl, 2),
+                    "0.70 rad".into(),
+                ));
             } else if sum.mean_speed_ft_s.is_some() {
-                table.push(("mean speed (ft/s)".into(), fmt_opt(sum.mean_speed_ft_s, 2), "3.01 (seed), 3.75 (experiment)".into()));
-                table.push(("mean rotation (rad/s)".into(), fmt_opt(sum.mean_omega_rad_s, 2), "19.56 (seed), 23.4 (experiment)".into()));
-                table.push(("mean flight-path angle (rad)".into(), fmt_opt(sum.mean_gamma, 3), "−0.20 (seed), −0.81 (experiment)".into()));
-                table.push(("max C_L in autorotation".into(), fmt_opt(sum.peak_cl_rotation, 2), "≈ 6.2 (seed)".into()));
+                table.push((
+                    "mean speed (ft/s)".into(),
+                    fmt_opt(sum.mean_speed_ft_s, 2),
+                    "3.01 (seed), 3.75 (experiment)".into(),
+                ));
+                table.push((
+                    "mean rotation (rad/s)".into(),
+                    fmt_opt(sum.mean_omega_rad_s, 2),
+                    "19.56 (seed), 23.4 (experiment)".into(),
+                ));
+                table.push((
+                    "mean flight-path angle (rad)".into(),
+                    fmt_opt(sum.mean_gamma, 3),
+                    "−0.20 (seed), −0.81 (experiment)".into(),
+                ));
+                table.push((
+                    "max C_L in autorotation".into(),
+                    fmt_opt(sum.peak_cl_rotation, 2),
+                    "≈ 6.2 (seed)".into(),
+                ));
             }
         }
     }
     if !table.is_empty() {
         r.push_str("\ncomparison with the seed (SPEC §8)\n");
         let w0 = table.iter().map(|x| x.0.chars().count()).max().unwrap_or(0);
-        let w1 = table.iter().map(|x| x.1.chars().count()).max().unwrap_or(0).max(9);
-        r.push_str(&format!("  {:w0$}  {:w1$}  {}\n", "quantity", "this run", "seed / experiment"));
+        let w1 = table
+            .iter()
+            .map(|x| x.1.chars().count())
+            .max()
+            .unwrap_or(0)
+            .max(9);
+        r.push_str(&format!(
+            "  {:w0$}  {:w1$}  {}\n",
+            "quantity", "this run", "seed / experiment"
+        ));
         for (a, b, c) in table {
             let pa = w0 - a.chars().count();
             let pb = w1 - b.chars().count();
-            r.push_str(&format!("  {a}{}  {b}{}  {c}\n", " ".repeat(pa), " ".repeat(pb)));
+            r.push_str(&format!(
+                "  {a}{}  {b}{}  {c}\n",
+                " ".repeat(pa),
+                " ".repeat(pb)
+            ));
         }
     }
     r
@@ -287,8 +418,16 @@ mod tests {
                 let t = k as f64 * 0.001;
                 let th = om * t;
                 let phase = dir * th;
-                let bump = |c: f64| (-(((phase - c).rem_euclid(PI) - PI / 2.0).powi(2)) * 8.0).exp();
-                StepSample { t, theta: th, omega: om, cl: dir * bump(1.0 - PI / 2.0 + PI), cd: bump(1.5 - PI / 2.0 + PI), ..Default::default() }
+                let bump =
+                    |c: f64| (-(((phase - c).rem_euclid(PI) - PI / 2.0).powi(2)) * 8.0).exp();
+                StepSample {
+                    t,
+                    theta: th,
+                    omega: om,
+                    cl: dir * bump(1.0 - PI / 2.0 + PI),
+                    cd: bump(1.5 - PI / 2.0 + PI),
+                    ..Default::default()
+                }
             })
             .collect()
     }
@@ -299,6 +438,9 @@ mod tests {
         let ccw = lag_cd_behind_cl(&turning(2.0), w).unwrap();
         let cw = lag_cd_behind_cl(&turning(-2.0), w).unwrap();
         assert!((ccw - 0.5).abs() < 0.01, "counter-clockwise lag {ccw}");
-        assert!((cw - ccw).abs() < 0.01, "clockwise lag {cw} differs from {ccw}");
+        assert!(
+            (cw - ccw).abs() < 0.01,
+            "clockwise lag {cw} differs from {ccw}"
+        );
     }
 }

@@ -12,13 +12,29 @@ fn first_step(args: &[&str]) -> platefall::record::messages::StepSample {
 }
 
 fn added_mass(n: usize) -> f64 {
-    let s = first_step(&["static", "--alpha", "1.5707963267948966", "--kick", "0", "--resolution", &n.to_string()]);
+    let s = first_step(&[
+        "static",
+        "--alpha",
+        "1.5707963267948966",
+        "--kick",
+        "0",
+        "--resolution",
+        &n.to_string(),
+    ]);
     // ΔV = 1 normal to the plate; drag = −F·ê_V, C_D = 2 D.
     0.5 * s.cd * s.dt
 }
 
 fn added_inertia(n: usize) -> f64 {
-    let s = first_step(&["forced", "--rate", "1", "--spinup", "0", "--resolution", &n.to_string()]);
+    let s = first_step(&[
+        "forced",
+        "--rate",
+        "1",
+        "--spinup",
+        "0",
+        "--resolution",
+        &n.to_string(),
+    ]);
     // Δθ̇ = 1; the moment opposes the spin-up: C_M = 2 M < 0. (The translation at U adds no
     // moment impulse: the plate starts at α = 0, edge-on.)
     -0.5 * s.cm * s.dt
@@ -32,8 +48,14 @@ fn impulsive_start_gives_the_flat_plate_added_mass() {
     let (m32, m64) = (added_mass(32), added_mass(64));
     let exact = PI / 4.0;
     eprintln!("added mass: N=32 {m32:.4}, N=64 {m64:.4}, exact {exact:.4}");
-    assert!((m32 / exact - 1.0).abs() < 0.06, "N=32 added mass {m32} vs π/4");
-    assert!((m64 - exact).abs() < (m32 - exact).abs(), "no convergence: {m32} → {m64}");
+    assert!(
+        (m32 / exact - 1.0).abs() < 0.06,
+        "N=32 added mass {m32} vs π/4"
+    );
+    assert!(
+        (m64 - exact).abs() < (m32 - exact).abs(),
+        "no convergence: {m32} → {m64}"
+    );
 }
 
 #[test]
@@ -42,5 +64,8 @@ fn impulsive_spin_up_gives_the_flat_plate_added_inertia() {
     let i32_ = added_inertia(32);
     let exact = PI / 128.0;
     eprintln!("added inertia: N=32 {i32_:.5}, exact {exact:.5}");
-    assert!((i32_ / exact - 1.0).abs() < 0.05, "N=32 added inertia {i32_} vs π/128");
+    assert!(
+        (i32_ / exact - 1.0).abs() < 0.05,
+        "N=32 added inertia {i32_} vs π/128"
+    );
 }

@@ -4,7 +4,10 @@ use std::path::PathBuf;
 use std::process::Command;
 
 fn platefall(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_platefall")).args(args).output().expect("binary runs");
+    let out = Command::new(env!("CARGO_BIN_EXE_platefall"))
+        .args(args)
+        .output()
+        .expect("binary runs");
     (
         out.status.code().unwrap_or(-1),
         String::from_utf8_lossy(&out.stdout).into_owned(),
@@ -34,7 +37,10 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         (&["free", "--mass", "0.5"], "0.5"),
         (&["pinned", "--preset", "none"], "--mass"),
         (&["free", "--ab-order", "7"], "1..=6"),
-        (&["static", "--summary", "/nonexistent-dir/s.json"], "/nonexistent-dir"),
+        (
+            &["static", "--summary", "/nonexistent-dir/s.json"],
+            "/nonexistent-dir",
+        ),
     ];
     for (args, needle) in cases {
         let mut full: Vec<&str> = args.to_vec();
@@ -46,7 +52,10 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         let (code, _, err) = platefall(&full);
         assert_eq!(code, 2, "{args:?}: exit {code}, stderr {err}");
         let first = err.lines().next().unwrap_or("");
-        assert!(first.starts_with("error:") && first.contains(needle), "{args:?}: stderr {err:?} lacks {needle:?}");
+        assert!(
+            first.starts_with("error:") && first.contains(needle),
+            "{args:?}: stderr {err:?} lacks {needle:?}"
+        );
         assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
         assert!(!summary.exists(), "{args:?} wrote a summary");
     }
@@ -56,15 +65,45 @@ fn bad_values_are_refused_naming_the_value_and_range() {
 fn summary_json_has_the_stable_keys() {
     let dir = scratch("ok");
     let summary = dir.join("s.json");
-    let (code, out, err) =
-        platefall(&["static", "--resolution", "8", "--t-end", "1", "--no-save", "--progress", "off", "--summary", summary.to_str().unwrap()]);
+    let (code, out, err) = platefall(&[
+        "static",
+        "--resolution",
+        "8",
+        "--t-end",
+        "1",
+        "--no-save",
+        "--progress",
+        "off",
+        "--summary",
+        summary.to_str().unwrap(),
+    ]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("status completed"), "{out}");
-    let v: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&summary).unwrap()).unwrap();
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&summary).unwrap()).unwrap();
     for key in [
-        "case", "re", "resolution", "cells", "steps", "t_end", "wall_seconds", "mean_cl", "mean_cd", "mean_cm",
-        "max_cl", "min_cl", "max_cd", "strouhal_chord", "strouhal_width", "mean_speed", "mean_omega", "mean_gamma",
-        "revolutions", "autorotation_time", "mean_speed_ft_s", "mean_omega_rad_s",
+        "case",
+        "re",
+        "resolution",
+        "cells",
+        "steps",
+        "t_end",
+        "wall_seconds",
+        "mean_cl",
+        "mean_cd",
+        "mean_cm",
+        "max_cl",
+        "min_cl",
+        "max_cd",
+        "strouhal_chord",
+        "strouhal_width",
+        "mean_speed",
+        "mean_omega",
+        "mean_gamma",
+        "revolutions",
+        "autorotation_time",
+        "mean_speed_ft_s",
+        "mean_omega_rad_s",
     ] {
         assert!(v.get(key).is_some(), "summary lacks {key}: {v}");
     }

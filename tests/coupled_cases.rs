@@ -8,26 +8,54 @@ use std::f64::consts::PI;
 fn forced_rotation_lift_is_periodic_at_the_forced_rate() {
     // θ̇ = 2 after a 1-unit spin-up: the plate is symmetric under a half-turn, so C_L repeats every
     // π/θ̇; its dominant frequency must be θ̇/π within 3 % (the spectral estimate over ≥ 4 periods).
-    let (_, rec, s) = common::run(&["forced", "--rate", "2", "--spinup", "1", "--resolution", "16", "--t-end", "12"]);
+    let (_, rec, s) = common::run(&[
+        "forced",
+        "--rate",
+        "2",
+        "--spinup",
+        "1",
+        "--resolution",
+        "16",
+        "--t-end",
+        "12",
+    ]);
     assert_eq!(rec.status, RunStatus::Completed);
     let w = Window { t0: 3.0, t1: 12.0 };
     let f = dominant_frequency(&rec.samples, w, 0.02, |x| x.cl).expect("periodic lift");
     let expected = 2.0 / PI;
-    assert!((f - expected).abs() < 0.03 * expected, "C_L frequency {f}, forced half-turn frequency {expected}");
+    assert!(
+        (f - expected).abs() < 0.03 * expected,
+        "C_L frequency {f}, forced half-turn frequency {expected}"
+    );
     // And the prescribed motion is what was asked: θ̇ = 2 after spin-up.
     assert!((rec.samples.last().unwrap().omega - 2.0).abs() < 1e-12);
-    assert!(s.max_cl.unwrap() > 2.0, "rotating plates reach lift far above the static maximum");
+    assert!(
+        s.max_cl.unwrap() > 2.0,
+        "rotating plates reach lift far above the static maximum"
+    );
 }
 
 #[test]
 fn pinned_card_reaches_sustained_autorotation() {
     // Released at α₀ = 0.1 after 5 units of development; θ must pass 4π and the mean rate over the
     // whole turns after the first must lie in [1.0, 2.5] (seed 1.58).
-    let (_, rec, s) = common::run(&["pinned", "--resolution", "16", "--t-end", "40", "--turns", "2.2"]);
+    let (_, rec, s) = common::run(&[
+        "pinned",
+        "--resolution",
+        "16",
+        "--t-end",
+        "40",
+        "--turns",
+        "2.2",
+    ]);
     assert_eq!(rec.status, RunStatus::Completed);
     let th0 = rec.samples.iter().find(|x| x.t >= 5.0).unwrap().theta;
     let th1 = rec.samples.last().unwrap().theta;
-    assert!((th1 - th0).abs() >= 4.0 * PI, "θ turned only {:.2} rad", th1 - th0);
+    assert!(
+        (th1 - th0).abs() >= 4.0 * PI,
+        "θ turned only {:.2} rad",
+        th1 - th0
+    );
     let w = s.mean_omega.expect("mean rate over whole turns").abs();
     assert!((1.0..=2.5).contains(&w), "mean θ̇ {w}");
     // Pinned: the centre keeps translating at U.
@@ -36,11 +64,28 @@ fn pinned_card_reaches_sustained_autorotation() {
 
 #[test]
 fn free_card_autorotates_while_falling() {
-    let (_, rec, s) = common::run(&["free", "--resolution", "16", "--t-end", "40", "--turns", "2.2"]);
+    let (_, rec, s) = common::run(&[
+        "free",
+        "--resolution",
+        "16",
+        "--t-end",
+        "40",
+        "--turns",
+        "2.2",
+    ]);
     assert_eq!(rec.status, RunStatus::Completed);
     let first = rec.samples.iter().find(|x| x.t >= 5.0).unwrap();
     let last = rec.samples.last().unwrap();
-    assert!((last.theta - first.theta).abs() >= 4.0 * PI, "θ turned only {:.2} rad", last.theta - first.theta);
-    assert!(last.y < first.y - 1.0, "the plate must fall: Y {} → {}", first.y, last.y);
+    assert!(
+        (last.theta - first.theta).abs() >= 4.0 * PI,
+        "θ turned only {:.2} rad",
+        last.theta - first.theta
+    );
+    assert!(
+        last.y < first.y - 1.0,
+        "the plate must fall: Y {} → {}",
+        first.y,
+        last.y
+    );
     assert!(s.autorotation_time.is_some() && s.mean_speed.unwrap() > 0.3);
 }

@@ -6,7 +6,11 @@ use platefall::grid::{Grid, GridSpec, Stretch};
 
 /// The frame of the manufactured solution: the centre moves along the body axes at (a, b) and the
 /// body spins at θ̇ (all nonzero, so every grid-velocity and rotation term is exercised).
-const FRAME: Frame = Frame { a: 0.7, b: -0.4, omega: 0.9 };
+const FRAME: Frame = Frame {
+    a: 0.7,
+    b: -0.4,
+    omega: 0.9,
+};
 const RE: f64 = 100.0;
 
 /// ψ = G(t) sin(Kx) sin(Ky), Kx = 1.3x + 0.4, Ky = 1.1y − 0.2; u = ψ_y, v = −ψ_x; p = 0.3 G sin x cos y.
@@ -20,7 +24,10 @@ impl Mms {
     fn velocity(x: f64, y: f64, t: f64) -> (f64, f64) {
         let (g, _) = Self::g(t);
         let (kx, ky) = (Self::KX * x + 0.4, Self::KY * y - 0.2);
-        (g * Self::KY * kx.sin() * ky.cos(), -g * Self::KX * kx.cos() * ky.sin())
+        (
+            g * Self::KY * kx.sin() * ky.cos(),
+            -g * Self::KX * kx.cos() * ky.sin(),
+        )
     }
     /// The body force that makes (u, v, p) an exact solution of SPEC §3's equations.
     fn force(x: f64, y: f64, t: f64) -> (f64, f64) {
@@ -47,13 +54,32 @@ impl Mms {
 /// A stretched grid without the plate: uniform core of N cells per unit, 1 unit of stretched
 /// patch of N/2 intervals on each side (the same stretching map at every N, to leading order).
 fn mms_grid(n: usize) -> Grid {
-    let spec = GridSpec { resolution: n, thickness: 0.5, extent_x: 1.0, extent_y: 1.0, stretch: Stretch::Intervals { nx: n / 2, ny: n / 2 } };
+    let spec = GridSpec {
+        resolution: n,
+        thickness: 0.5,
+        extent_x: 1.0,
+        extent_y: 1.0,
+        stretch: Stretch::Intervals {
+            nx: n / 2,
+            ny: n / 2,
+        },
+    };
     Grid::new(&spec).unwrap().without_plate()
 }
 
 fn mms_solver(n: usize) -> FlowSolver {
-    let params = FlowParams { re: RE, cfl: 0.3, ..FlowParams::default() };
-    let mut s = FlowSolver::new(mms_grid(n), params, OuterBc::Prescribed(Box::new(Mms::velocity)), FRAME).unwrap();
+    let params = FlowParams {
+        re: RE,
+        cfl: 0.3,
+        ..FlowParams::default()
+    };
+    let mut s = FlowSolver::new(
+        mms_grid(n),
+        params,
+        OuterBc::Prescribed(Box::new(Mms::velocity)),
+        FRAME,
+    )
+    .unwrap();
     s.set_forcing(Box::new(Mms::force));
     s.set_velocity(|x, y| Mms::velocity(x, y, 0.0));
     s
@@ -63,7 +89,10 @@ fn mms_solver(n: usize) -> FlowSolver {
 fn run_to(s: &mut FlowSolver, t_end: f64, dt: f64) {
     while s.t < t_end - 1e-12 {
         let limit = s.prepare().unwrap();
-        assert!(dt <= limit * 1.0001, "requested dt {dt} exceeds the stability limit {limit}");
+        assert!(
+            dt <= limit * 1.0001,
+            "requested dt {dt} exceeds the stability limit {limit}"
+        );
         let n_left = ((t_end - s.t) / dt).round().max(1.0);
         s.advance((t_end - s.t) / n_left, FRAME).unwrap();
     }
@@ -104,7 +133,10 @@ fn manufactured_solution_converges_at_second_order_in_space() {
     let orders: Vec<f64> = errors.windows(2).map(|e| (e[0] / e[1]).log2()).collect();
     eprintln!("MMS space: errors {errors:?}, observed orders {orders:?}");
     for p in &orders {
-        assert!(*p >= 1.8, "observed spatial order {p} < 1.8 (errors {errors:?})");
+        assert!(
+            *p >= 1.8,
+            "observed spatial order {p} < 1.8 (errors {errors:?})"
+        );
     }
 }
 
@@ -123,7 +155,12 @@ fn manufactured_solution_converges_at_second_order_in_time() {
         let (ua, va) = a.velocity_arrays();
         let (ub, vb) = b.velocity_arrays();
         let n = (ua.len() + va.len()) as f64;
-        let s: f64 = ua.iter().zip(&ub).chain(va.iter().zip(&vb)).map(|(x, y)| (x - y) * (x - y)).sum();
+        let s: f64 = ua
+            .iter()
+            .zip(&ub)
+            .chain(va.iter().zip(&vb))
+            .map(|(x, y)| (x - y) * (x - y))
+            .sum();
         (s / n).sqrt()
     };
     let e1 = diff(&runs[0], &runs[1]);
@@ -139,10 +176,29 @@ fn rigid_rotation_with_a_spinning_plate_is_steady_with_the_centripetal_pressure(
     // relative velocity vanishes and the θ̇ source terms must be balanced exactly by p = θ̇²r²/2.
     let om = 1.3;
     let rigid = move |x: f64, y: f64, _t: f64| (-om * y, om * x);
-    let spec = GridSpec { resolution: 16, thickness: 1.0 / 16.0, extent_x: 3.0, extent_y: 3.0, stretch: Stretch::GrowthCap(1.1) };
-    let frame = Frame { a: 0.0, b: 0.0, omega: om };
-    let params = FlowParams { re: 100.0, ..FlowParams::default() };
-    let mut s = FlowSolver::new(Grid::new(&spec).unwrap(), params, OuterBc::Prescribed(Box::new(rigid)), frame).unwrap();
+    let spec = GridSpec {
+        resolution: 16,
+        thickness: 1.0 / 16.0,
+        extent_x: 3.0,
+        extent_y: 3.0,
+        stretch: Stretch::GrowthCap(1.1),
+    };
+    let frame = Frame {
+        a: 0.0,
+        b: 0.0,
+        omega: om,
+    };
+    let params = FlowParams {
+        re: 100.0,
+        ..FlowParams::default()
+    };
+    let mut s = FlowSolver::new(
+        Grid::new(&spec).unwrap(),
+        params,
+        OuterBc::Prescribed(Box::new(rigid)),
+        frame,
+    )
+    .unwrap();
     s.set_velocity(|x, y| rigid(x, y, 0.0));
     for _ in 0..30 {
         let dt = s.prepare().unwrap().min(0.01);
@@ -151,7 +207,10 @@ fn rigid_rotation_with_a_spinning_plate_is_steady_with_the_centripetal_pressure(
     // Velocity stays the rigid rotation to round-off (the discrete balance is exact, see the
     // derivation in the README's numerics section); 1e-10 leaves room for the Cholesky solve.
     let err = rms_error(&s, |x, y| rigid(x, y, 0.0));
-    assert!(err < 1e-10, "velocity drifted from rigid rotation: rms {err:e}");
+    assert!(
+        err < 1e-10,
+        "velocity drifted from rigid rotation: rms {err:e}"
+    );
     // Pressure equals θ̇²r²/2 up to the arbitrary constant: compare after removing the mean difference.
     let g = &s.grid;
     let mut diffs = Vec::new();
@@ -167,20 +226,37 @@ fn rigid_rotation_with_a_spinning_plate_is_steady_with_the_centripetal_pressure(
     }
     let mean = diffs.iter().sum::<f64>() / diffs.len() as f64;
     let worst = diffs.iter().map(|d| (d - mean).abs()).fold(0.0, f64::max);
-    assert!(worst < 1e-8 * p_scale, "pressure differs from θ̇²r²/2 by {worst:e} (scale {p_scale})");
+    assert!(
+        worst < 1e-8 * p_scale,
+        "pressure differs from θ̇²r²/2 by {worst:e} (scale {p_scale})"
+    );
 }
 
 #[test]
 fn velocity_is_discretely_divergence_free_after_every_step() {
     // A plate translating and spinning in the far-field configuration (convective outflow).
     let spec = GridSpec::modern(16);
-    let frame = Frame { a: 0.92, b: -0.39, omega: 0.8 };
-    let mut s = FlowSolver::new(Grid::new(&spec).unwrap(), FlowParams::default(), OuterBc::FarField, frame).unwrap();
+    let frame = Frame {
+        a: 0.92,
+        b: -0.39,
+        omega: 0.8,
+    };
+    let mut s = FlowSolver::new(
+        Grid::new(&spec).unwrap(),
+        FlowParams::default(),
+        OuterBc::FarField,
+        frame,
+    )
+    .unwrap();
     for step in 0..60 {
         let dt = s.prepare().unwrap().min(0.01);
         s.advance(dt, frame).unwrap();
         let scale = s.max_velocity() / s.grid.h;
         let div = s.max_divergence();
-        assert!(div <= 1e-10 * scale, "step {step}: max |div u| = {div:e} > 1e-10 |u|/h = {:e}", 1e-10 * scale);
+        assert!(
+            div <= 1e-10 * scale,
+            "step {step}: max |div u| = {div:e} > 1e-10 |u|/h = {:e}",
+            1e-10 * scale
+        );
     }
 }

@@ -7,7 +7,11 @@ fn seed_x_stretching_matches_the_dissertation() {
     let c = stretch_coefficient(1.0 / 16.0, 10.0, 24).unwrap();
     assert!((c - 3.157).abs() < 5e-4, "C_x = {c}");
     let g = Grid::new(&GridSpec::seed()).unwrap();
-    assert!((g.outer_spacing().0 - 1.287).abs() < 5e-4, "outer dx = {}", g.outer_spacing().0);
+    assert!(
+        (g.outer_spacing().0 - 1.287).abs() < 5e-4,
+        "outer dx = {}",
+        g.outer_spacing().0
+    );
     assert_eq!(g.nx + 1, 65, "seed grid has 65 points along x");
 }
 
@@ -18,7 +22,11 @@ fn seed_y_stretching_matches_the_dissertation() {
     let g = Grid::new(&GridSpec::seed()).unwrap();
     let cy = g.cy.unwrap();
     assert!((cy - 2.98).abs() < 0.01, "C_y = {cy}");
-    assert!((g.outer_spacing().1 - 1.10).abs() < 0.012, "outer dy = {}", g.outer_spacing().1);
+    assert!(
+        (g.outer_spacing().1 - 1.10).abs() < 0.012,
+        "outer dy = {}",
+        g.outer_spacing().1
+    );
     // The first stretched interval equals h: the map joins the uniform core smoothly.
     let h = 1.0 / 16.0;
     assert!((g.dy[g.j0 - 1] - h).abs() < 1e-12 && (g.dx[g.i0 - 1] - h).abs() < 1e-12);
@@ -40,7 +48,11 @@ fn spacing_is_monotone_and_growth_within_the_cap() {
         for w in g.dx[g.i1 - 1..].windows(2) {
             assert!(w[1] >= w[0] * (1.0 - 1e-12));
         }
-        assert!(g.max_growth() <= cap * (1.0 + 1e-9), "N={n}: growth {} > cap {cap}", g.max_growth());
+        assert!(
+            g.max_growth() <= cap * (1.0 + 1e-9),
+            "N={n}: growth {} > cap {cap}",
+            g.max_growth()
+        );
         // Extent reached: outer boundary 15 chords from the plate.
         assert!((g.xn[g.nx] - 15.5).abs() < 1e-9 && (g.xn[0] + 15.5).abs() < 1e-9);
         // Plate is a whole number of cells and the chord is N cells.

@@ -29,9 +29,18 @@ static GLOBAL: Counting = Counting;
 #[test]
 fn flow_steps_allocate_nothing() {
     // A translating, spinning plate with the far-field boundary: every phase of the step runs.
-    let frame = Frame { a: 0.9, b: -0.4, omega: 1.2 };
-    let mut s = FlowSolver::new(Grid::new(&GridSpec::modern(16)).unwrap(), FlowParams::default(), OuterBc::FarField, frame)
-        .unwrap();
+    let frame = Frame {
+        a: 0.9,
+        b: -0.4,
+        omega: 1.2,
+    };
+    let mut s = FlowSolver::new(
+        Grid::new(&GridSpec::modern(16)).unwrap(),
+        FlowParams::default(),
+        OuterBc::FarField,
+        frame,
+    )
+    .unwrap();
     for _ in 0..3 {
         let dt = s.prepare().unwrap().min(0.01);
         s.advance(dt, frame).unwrap();

@@ -214,7 +214,7 @@ fn snapshots_offered_to_a_busy_logger_are_skipped_and_reported() {
     }
     let report = logger.finish(outcome(RunStatus::Completed)).unwrap();
     assert!(report.fields_skipped >= 2);
-    assert_eq!(report.fields_logged, 3 + (report.fields_skipped - 2) * 0);
+    assert_eq!(report.fields_logged, 3);
     assert!(
         report.lines()[0].contains("skipped"),
         "{:?}",

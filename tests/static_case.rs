@@ -6,12 +6,29 @@ use platefall::record::messages::RunStatus;
 fn normal_plate_sheds_an_asymmetric_wake() {
     // α = π/2: the seed's solver kept a symmetric wake (C_D 1.494, no street). Here the wake must
     // break symmetry and shed: C_L oscillates with amplitude > 0.1 over the developed part.
-    let (_, rec, s) = common::run(&["static", "--alpha", "1.5707963267948966", "--resolution", "16", "--t-end", "60"]);
+    let (_, rec, s) = common::run(&[
+        "static",
+        "--alpha",
+        "1.5707963267948966",
+        "--resolution",
+        "16",
+        "--t-end",
+        "60",
+    ]);
     assert_eq!(rec.status, RunStatus::Completed);
     let amplitude = 0.5 * (s.max_cl.unwrap() - s.min_cl.unwrap());
-    eprintln!("α = π/2: C_L amplitude {amplitude:.3}, mean C_D {:.3}", s.mean_cd.unwrap());
-    assert!(amplitude > 0.1, "C_L amplitude {amplitude} ≤ 0.1: no shedding");
-    assert!(s.strouhal_chord.is_some(), "a shedding wake has a dominant lift frequency");
+    eprintln!(
+        "α = π/2: C_L amplitude {amplitude:.3}, mean C_D {:.3}",
+        s.mean_cd.unwrap()
+    );
+    assert!(
+        amplitude > 0.1,
+        "C_L amplitude {amplitude} ≤ 0.1: no shedding"
+    );
+    assert!(
+        s.strouhal_chord.is_some(),
+        "a shedding wake has a dominant lift frequency"
+    );
     // A shedding wake drags harder than the seed's symmetric one (1.494; a symmetric wake here
     // decays below 1.0 by t = 10); 2-D computations of shedding normal plates give ≈ 2.6 at
     // Re 250 (Najjar & Vanka 1995) and more at higher Re, and this solver gives 3.3–3.8 at
@@ -24,10 +41,21 @@ fn normal_plate_sheds_an_asymmetric_wake() {
 fn inclined_plate_sheds_at_the_expected_strouhal_number() {
     // α = 0.4: periodic shedding with a Strouhal number on the projected width c sin α in
     // [0.12, 0.20] (seed 0.13; bluff-body wakes 0.14–0.18).
-    let (_, rec, s) = common::run(&["static", "--alpha", "0.4", "--resolution", "16", "--t-end", "40"]);
+    let (_, rec, s) = common::run(&[
+        "static",
+        "--alpha",
+        "0.4",
+        "--resolution",
+        "16",
+        "--t-end",
+        "40",
+    ]);
     assert_eq!(rec.status, RunStatus::Completed);
     let st = s.strouhal_width.expect("periodic shedding");
-    assert!((0.12..=0.20).contains(&st), "Strouhal on the projected width {st}");
+    assert!(
+        (0.12..=0.20).contains(&st),
+        "Strouhal on the projected width {st}"
+    );
     // Lift is positive for positive α (SPEC §5: motion to the right, lift up).
     assert!(s.mean_cl.unwrap() > 0.3 && s.mean_cd.unwrap() > 0.0);
 }
@@ -37,21 +65,61 @@ fn mirrored_angle_mirrors_lift_and_moment_and_keeps_drag() {
     // Reflection y → −y maps α to −α: C_L and C_M change sign, C_D is unchanged. Short attached
     // start-up (t ≤ 3) without the kick; only round-off in the factorisation differs, so 1e-6.
     let run = |alpha: &str| {
-        common::run(&["static", "--alpha", alpha, "--kick", "0", "--resolution", "16", "--t-end", "3"]).1.samples
+        common::run(&[
+            "static",
+            "--alpha",
+            alpha,
+            "--kick",
+            "0",
+            "--resolution",
+            "16",
+            "--t-end",
+            "3",
+        ])
+        .1
+        .samples
     };
     let (a, b) = (run("0.3"), run("-0.3"));
     assert_eq!(a.len(), b.len());
     for (p, q) in a.iter().zip(&b).skip(1) {
-        assert!((p.cl + q.cl).abs() < 1e-6 * (1.0 + p.cl.abs()), "t={} C_L {} vs {}", p.t, p.cl, q.cl);
-        assert!((p.cm + q.cm).abs() < 1e-6 * (1.0 + p.cm.abs()), "t={} C_M {} vs {}", p.t, p.cm, q.cm);
-        assert!((p.cd - q.cd).abs() < 1e-6 * (1.0 + p.cd.abs()), "t={} C_D {} vs {}", p.t, p.cd, q.cd);
+        assert!(
+            (p.cl + q.cl).abs() < 1e-6 * (1.0 + p.cl.abs()),
+            "t={} C_L {} vs {}",
+            p.t,
+            p.cl,
+            q.cl
+        );
+        assert!(
+            (p.cm + q.cm).abs() < 1e-6 * (1.0 + p.cm.abs()),
+            "t={} C_M {} vs {}",
+            p.t,
+            p.cm,
+            q.cm
+        );
+        assert!(
+            (p.cd - q.cd).abs() < 1e-6 * (1.0 + p.cd.abs()),
+            "t={} C_D {} vs {}",
+            p.t,
+            p.cd,
+            q.cd
+        );
     }
 }
 
 #[test]
 fn zero_incidence_plate_has_no_lift_and_only_friction_and_edge_drag() {
     // α = 0, symmetric about the chord line: C_L ≈ 0 to round-off, C_D > 0.
-    let (_, _, s) = common::run(&["static", "--alpha", "0", "--kick", "0", "--resolution", "16", "--t-end", "4"]);
+    let (_, _, s) = common::run(&[
+        "static",
+        "--alpha",
+        "0",
+        "--kick",
+        "0",
+        "--resolution",
+        "16",
+        "--t-end",
+        "4",
+    ]);
     assert!(s.mean_cl.unwrap().abs() < 1e-8, "C_L = {:?}", s.mean_cl);
     assert!(s.mean_cd.unwrap() > 0.0);
 }

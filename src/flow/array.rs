@@ -19,7 +19,12 @@ pub struct Padded {
 impl Padded {
     pub fn zeros(ni: usize, nj: usize) -> Self {
         let stride = ni + 2 * GHOST;
-        Padded { ni, nj, stride, data: vec![0.0; stride * (nj + 2 * GHOST)] }
+        Padded {
+            ni,
+            nj,
+            stride,
+            data: vec![0.0; stride * (nj + 2 * GHOST)],
+        }
     }
 
     /// Flat index of (i, j), where i, j may be negative down to −GHOST.

@@ -33,7 +33,14 @@ impl std::fmt::Debug for OuterBc {
 const G: isize = GHOST as isize;
 
 /// Fills every ghost value of u and v for the state at time t (boundary faces themselves untouched).
-pub fn fill_ghosts(u: &mut Padded, v: &mut Padded, m: &Metrics, frame: &Frame, bc: &OuterBc, t: f64) {
+pub fn fill_ghosts(
+    u: &mut Padded,
+    v: &mut Padded,
+    m: &Metrics,
+    frame: &Frame,
+    bc: &OuterBc,
+    t: f64,
+) {
     let nx = v.ni as isize;
     let ny = u.nj as isize;
     match bc {
@@ -102,7 +109,15 @@ pub fn fill_ghosts(u: &mut Padded, v: &mut Padded, m: &Metrics, frame: &Frame, b
 
 /// Sets the normal velocity on every outer boundary face for the new time level t (state after the
 /// step), given the grid motion at that time, and removes the net flux.
-pub fn set_outer_normals(u: &mut Padded, v: &mut Padded, m: &Metrics, frame: &Frame, bc: &OuterBc, t: f64, dt: f64) {
+pub fn set_outer_normals(
+    u: &mut Padded,
+    v: &mut Padded,
+    m: &Metrics,
+    frame: &Frame,
+    bc: &OuterBc,
+    t: f64,
+    dt: f64,
+) {
     let nx = v.ni as isize;
     let ny = u.nj as isize;
     match bc {

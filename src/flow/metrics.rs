@@ -87,7 +87,9 @@ impl Metrics {
             inv_prev: (0..n as isize).map(|k| 1.0 / a.centre_gap(k)).collect(),
         };
         let low_weight = |a: &Axis, n: usize| -> Vec<f64> {
-            (0..=n as isize).map(|k| a.width(k - 1) / (a.width(k - 1) + a.width(k))).collect()
+            (0..=n as isize)
+                .map(|k| a.width(k - 1) / (a.width(k - 1) + a.width(k)))
+                .collect()
         };
         Metrics {
             u_x: faces(&x, grid.nx),

@@ -42,7 +42,11 @@ pub struct FlowParams {
 
 impl Default for FlowParams {
     fn default() -> Self {
-        FlowParams { re: 5000.0, cfl: 0.5, visc_safety: 0.8 }
+        FlowParams {
+            re: 5000.0,
+            cfl: 0.5,
+            visc_safety: 0.8,
+        }
     }
 }
 
@@ -101,14 +105,20 @@ pub struct FlowSolver {
 
 impl FlowSolver {
     /// A fluid at rest (u = 0) around a plate moving with `frame` at time 0.
-    pub fn new(grid: Grid, params: FlowParams, outer: OuterBc, frame: Frame) -> Result<Self, FlowError> {
+    pub fn new(
+        grid: Grid,
+        params: FlowParams,
+        outer: OuterBc,
+        frame: Frame,
+    ) -> Result<Self, FlowError> {
         let metrics = Metrics::new(&grid);
         let pressure = Pressure::new(&grid, &metrics).map_err(|e| FlowError::Setup(e.0))?;
         let nu = 1.0 / params.re;
         let (wall_u, wall_v) = plate::wall_faces(&grid, &metrics, nu);
         let min_dx = grid.dx.iter().copied().fold(f64::INFINITY, f64::min);
         let min_dy = grid.dy.iter().copied().fold(f64::INFINITY, f64::min);
-        let dt_visc = params.visc_safety / (4.0 * nu * (1.0 / (min_dx * min_dx) + 1.0 / (min_dy * min_dy)));
+        let dt_visc =
+            params.visc_safety / (4.0 * nu * (1.0 / (min_dx * min_dx) + 1.0 / (min_dy * min_dy)));
         let (nx, ny) = (grid.nx, grid.ny);
         let mut s = FlowSolver {
             u: Padded::zeros(nx + 1, ny),
@@ -159,15 +169,36 @@ impl FlowSolver {
                 self.v.set(i, j, f(m.x.centre(i), m.y.node(j)).1);
             }
         }
-        plate::set_plate_faces(&mut self.u, &mut self.v, &self.grid, &self.metrics, &self.frame);
+        plate::set_plate_faces(
+            &mut self.u,
+            &mut self.v,
+            &self.grid,
+            &self.metrics,
+            &self.frame,
+        );
     }
 
     /// Phase 1 of a step (see the module docs). Returns the largest stable Δt: the convective limit
     /// CFL / max(|w_x|/Δx + |w_y|/Δy) and the explicit viscous limit.
     pub fn prepare(&mut self) -> Result<f64, FlowError> {
-        boundary::fill_ghosts(&mut self.u, &mut self.v, &self.metrics, &self.frame, &self.outer, self.t);
+        boundary::fill_ghosts(
+            &mut self.u,
+            &mut self.v,
+            &self.metrics,
+            &self.frame,
+            &self.outer,
+            self.t,
+        );
         let nu = 1.0 / self.params.re;
-        let stats = momentum::explicit_rhs(&self.u, &self.v, &self.metrics, &self.frame, nu, &mut self.hu, &mut self.hv);
+        let stats = momentum::explicit_rhs(
+            &self.u,
+            &self.v,
+            &self.metrics,
+            &self.frame,
+            nu,
+            &mut self.hu,
+            &mut self.hv,
+        );
         self.rate = stats.rate;
         plate::apply_wall_faces(
             &self.wall_u,
@@ -186,21 +217,28 @@ impl FlowSolver {
         // explicit scheme has gone unstable.
         let f = &self.frame;
         let bound = BLOWUP_FACTOR * (1.0 + f.a.hypot(f.b) + f.omega.abs());
-        if !(stats.max_speed <= bound) || !self.rate.is_finite() {
+        if stats.max_speed.is_nan() || stats.max_speed > bound || !self.rate.is_finite() {
             return Err(self.diverged(&format!(
                 "the largest velocity {:.3e} exceeds {bound:.1} = {BLOWUP_FACTOR} × (1 + V + |θ̇|)",
                 stats.max_speed
             )));
         }
         self.prepared = true;
-        let dt_conv = if self.rate > 0.0 { self.params.cfl / self.rate } else { f64::INFINITY };
+        let dt_conv = if self.rate > 0.0 {
+            self.params.cfl / self.rate
+        } else {
+            f64::INFINITY
+        };
         Ok(dt_conv.min(self.dt_visc))
     }
 
     /// Phase 2 of a step (see the module docs): advance to t + dt with the plate moving as `next`.
     pub fn advance(&mut self, dt: f64, next: Frame) -> Result<(), FlowError> {
         assert!(self.prepared, "FlowSolver::advance called without prepare");
-        assert!(dt > 0.0 && dt.is_finite(), "FlowSolver::advance needs a positive finite dt, got {dt}");
+        assert!(
+            dt > 0.0 && dt.is_finite(),
+            "FlowSolver::advance needs a positive finite dt, got {dt}"
+        );
         self.prepared = false;
         // Variable-step AB2 weights (Euler on the first step).
         let (c_new, c_old) = if self.steps == 0 {
@@ -228,14 +266,46 @@ impl FlowSolver {
         std::mem::swap(&mut self.hv, &mut self.hv_old);
         let t_next = self.t + dt;
         self.frame = next;
-        plate::set_plate_faces(&mut self.u, &mut self.v, &self.grid, &self.metrics, &self.frame);
-        boundary::set_outer_normals(&mut self.u, &mut self.v, &self.metrics, &self.frame, &self.outer, t_next, dt);
-        self.pressure.project(&mut self.u, &mut self.v, &self.grid, &self.metrics, dt, &mut self.p);
+        plate::set_plate_faces(
+            &mut self.u,
+            &mut self.v,
+            &self.grid,
+            &self.metrics,
+            &self.frame,
+        );
+        boundary::set_outer_normals(
+            &mut self.u,
+            &mut self.v,
+            &self.metrics,
+            &self.frame,
+            &self.outer,
+            t_next,
+            dt,
+        );
+        self.pressure.project(
+            &mut self.u,
+            &mut self.v,
+            &self.grid,
+            &self.metrics,
+            dt,
+            &mut self.p,
+        );
         self.t = t_next;
         self.dt_prev = dt;
         self.steps += 1;
-        self.loads = plate::loads(&self.u, &self.v, &self.p, &self.grid, &self.metrics, &self.frame, self.params.re);
-        if !(self.loads.fx.is_finite() && self.loads.fy.is_finite() && self.loads.moment.is_finite()) {
+        self.loads = plate::loads(
+            &self.u,
+            &self.v,
+            &self.p,
+            &self.grid,
+            &self.metrics,
+            &self.frame,
+            self.params.re,
+        );
+        if !(self.loads.fx.is_finite()
+            && self.loads.fy.is_finite()
+            && self.loads.moment.is_finite())
+        {
             return Err(self.diverged("the force on the plate is not finite"));
         }
         Ok(())

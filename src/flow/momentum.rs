@@ -47,7 +47,10 @@ pub fn face_value(far: f64, up: f64, down: f64) -> f64 {
         return up;
     }
     // ψ(r)·dd with r = dc/dd and ψ = min(2r, (2 + r)/3, 2), all of the sign of dd.
-    let a = (2.0 * dc).abs().min(((2.0 * dd + dc) / 3.0).abs()).min((2.0 * dd).abs());
+    let a = (2.0 * dc)
+        .abs()
+        .min(((2.0 * dd + dc) / 3.0).abs())
+        .min((2.0 * dd).abs());
     up + 0.5 * a.copysign(dd)
 }
 
@@ -97,10 +100,26 @@ pub fn explicit_rhs(
             let (vnl, vnr) = (v.get(i - 1, j + 1), v.get(i, j + 1));
             let wn = wl * (vnl - gyl) + (1.0 - wl) * (vnr - gyr);
             let ws = wl * (vsl - gyl) + (1.0 - wl) * (vsr - gyr);
-            let fe = if we >= 0.0 { face_value(uw, up, ue) } else { face_value(u.get(i + 2, j), ue, up) };
-            let fw = if ww >= 0.0 { face_value(u.get(i - 2, j), uw, up) } else { face_value(ue, up, uw) };
-            let f_n = if wn >= 0.0 { face_value(us, up, un) } else { face_value(u.get(i, j + 2), un, up) };
-            let fs = if ws >= 0.0 { face_value(u.get(i, j - 2), us, up) } else { face_value(un, up, us) };
+            let fe = if we >= 0.0 {
+                face_value(uw, up, ue)
+            } else {
+                face_value(u.get(i + 2, j), ue, up)
+            };
+            let fw = if ww >= 0.0 {
+                face_value(u.get(i - 2, j), uw, up)
+            } else {
+                face_value(ue, up, uw)
+            };
+            let f_n = if wn >= 0.0 {
+                face_value(us, up, un)
+            } else {
+                face_value(u.get(i, j + 2), un, up)
+            };
+            let fs = if ws >= 0.0 {
+                face_value(u.get(i, j - 2), us, up)
+            } else {
+                face_value(un, up, us)
+            };
             let cvx = m.u_x.inv_cv[iu];
             let conv = (we * fe - ww * fw) * cvx + (wn * f_n - ws * fs) * cvy;
             let diff = ((ue - up) * m.u_x.inv_next[iu] - (up - uw) * m.u_x.inv_prev[iu]) * cvx
@@ -136,10 +155,26 @@ pub fn explicit_rhs(
             let (uwh, ueh) = (u.get(i, j), u.get(i + 1, j));
             let we = ws_w * (uel - gxl) + (1.0 - ws_w) * (ueh - gxh);
             let ww = ws_w * (uwl - gxl) + (1.0 - ws_w) * (uwh - gxh);
-            let fe = if we >= 0.0 { face_value(vw, vp, ve) } else { face_value(v.get(i + 2, j), ve, vp) };
-            let fw = if ww >= 0.0 { face_value(v.get(i - 2, j), vw, vp) } else { face_value(ve, vp, vw) };
-            let f_n = if wn >= 0.0 { face_value(vs, vp, vn) } else { face_value(v.get(i, j + 2), vn, vp) };
-            let fs = if wsv >= 0.0 { face_value(v.get(i, j - 2), vs, vp) } else { face_value(vn, vp, vs) };
+            let fe = if we >= 0.0 {
+                face_value(vw, vp, ve)
+            } else {
+                face_value(v.get(i + 2, j), ve, vp)
+            };
+            let fw = if ww >= 0.0 {
+                face_value(v.get(i - 2, j), vw, vp)
+            } else {
+                face_value(ve, vp, vw)
+            };
+            let f_n = if wn >= 0.0 {
+                face_value(vs, vp, vn)
+            } else {
+                face_value(v.get(i, j + 2), vn, vp)
+            };
+            let fs = if wsv >= 0.0 {
+                face_value(v.get(i, j - 2), vs, vp)
+            } else {
+                face_value(vn, vp, vs)
+            };
             let cvx = m.v_x.inv_cv[iu];
             let conv = (we * fe - ww * fw) * cvx + (wn * f_n - wsv * fs) * cvy;
             let diff = ((ve - vp) * m.v_x.inv_next[iu] - (vp - vw) * m.v_x.inv_prev[iu]) * cvx
@@ -154,5 +189,8 @@ pub fn explicit_rhs(
             }
         }
     }
-    RhsStats { rate: max_rate, max_speed }
+    RhsStats {
+        rate: max_rate,
+        max_speed,
+    }
 }

@@ -43,7 +43,11 @@ pub fn wall_faces(grid: &Grid, m: &Metrics, nu: f64) -> (Vec<WallFace>, Vec<Wall
             (grid.j0 as isize - 1, m.y.centre_gap(grid.j0 as isize)),
         ] {
             let cv = m.y.width(j);
-            wu.push(WallFace { i: i as isize, j, coef: -nu / (d * cv) });
+            wu.push(WallFace {
+                i: i as isize,
+                j,
+                coef: -nu / (d * cv),
+            });
         }
     }
     let mut wv = Vec::new();
@@ -54,7 +58,11 @@ pub fn wall_faces(grid: &Grid, m: &Metrics, nu: f64) -> (Vec<WallFace>, Vec<Wall
             (grid.i0 as isize - 1, m.x.centre_gap(grid.i0 as isize)),
         ] {
             let cv = m.x.width(i);
-            wv.push(WallFace { i, j: j as isize, coef: -nu / (d * cv) });
+            wv.push(WallFace {
+                i,
+                j: j as isize,
+                coef: -nu / (d * cv),
+            });
         }
     }
     (wu, wv)
@@ -106,7 +114,15 @@ fn overlap(a: f64, b: f64, lo: f64, hi: f64) -> f64 {
 /// μ (u − g)/(distance to the wall) from the first fluid velocity parallel to the face, over the part
 /// of its control volume that lies along the plate. Normal viscous stress vanishes on a rigid
 /// no-slip wall (∂u_n/∂n = −∂u_t/∂t = 0), so it is not summed.
-pub fn loads(u: &Padded, v: &Padded, p: &[f64], grid: &Grid, m: &Metrics, frame: &Frame, re: f64) -> Loads {
+pub fn loads(
+    u: &Padded,
+    v: &Padded,
+    p: &[f64],
+    grid: &Grid,
+    m: &Metrics,
+    frame: &Frame,
+    re: f64,
+) -> Loads {
     if !grid.has_plate() {
         return Loads::default();
     }
@@ -156,7 +172,13 @@ pub fn loads(u: &Padded, v: &Padded, p: &[f64], grid: &Grid, m: &Metrics, frame:
         fy += (tr + tl) * len;
         mz += (x_hi * tr + x_lo * tl) * len;
     }
-    Loads { fx, fy, moment: mz, fx_pressure: fxp, fy_pressure: fyp }
+    Loads {
+        fx,
+        fy,
+        moment: mz,
+        fx_pressure: fxp,
+        fy_pressure: fyp,
+    }
 }
 
 /// Lift, drag and moment coefficients on the reference speed (SPEC §5): with ê_V the unit vector
@@ -165,7 +187,11 @@ pub fn loads(u: &Padded, v: &Padded, p: &[f64], grid: &Grid, m: &Metrics, frame:
 /// back to the body x axis.
 pub fn coefficients(l: &Loads, frame: &Frame) -> (f64, f64, f64) {
     let speed = frame.a.hypot(frame.b);
-    let (ex, ey) = if speed > 1e-12 { (frame.a / speed, frame.b / speed) } else { (1.0, 0.0) };
+    let (ex, ey) = if speed > 1e-12 {
+        (frame.a / speed, frame.b / speed)
+    } else {
+        (1.0, 0.0)
+    };
     let drag = -(l.fx * ex + l.fy * ey);
     let lift = l.fx * (-ey) + l.fy * ex;
     (2.0 * lift, 2.0 * drag, 2.0 * l.moment)

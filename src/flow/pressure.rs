@@ -10,7 +10,8 @@
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::sparse::linalg::cholesky::{
-    factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky, SymmetricOrdering,
+    factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky,
+    SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMat, Triplet};
@@ -47,7 +48,9 @@ impl Pressure {
     /// Assembles and factors −∇² with the Neumann conditions described above.
     pub fn new(grid: &Grid, m: &Metrics) -> Result<Self, PressureError> {
         let (nx, ny) = (grid.nx, grid.ny);
-        let fluid: Vec<bool> = (0..nx * ny).map(|k| !grid.is_solid(k % nx, k / nx)).collect();
+        let fluid: Vec<bool> = (0..nx * ny)
+            .map(|k| !grid.is_solid(k % nx, k / nx))
+            .collect();
         let mut unknown = vec![NONE; nx * ny];
         let mut count = 0u32;
         // Cell 0 (a far-field corner) is pinned.
@@ -102,7 +105,8 @@ impl Pressure {
             supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
             ..Default::default()
         };
-        let symbolic = factorize_symbolic_cholesky(a.symbolic(), Side::Lower, SymmetricOrdering::Amd, params)
+        let symbolic =
+            factorize_symbolic_cholesky(a.symbolic(), Side::Lower, SymmetricOrdering::Amd, params)
                 .map_err(|e| PressureError(format!("symbolic Cholesky: {e:?}")))?;
         let mut values = vec![0.0; symbolic.len_val()];
         let req = symbolic
@@ -121,7 +125,18 @@ impl Pressure {
             )
             .map_err(|e| PressureError(format!("numeric Cholesky: {e:?}")))?;
         let factor_nnz = values.len();
-        Ok(Pressure { nx, ny, unknown, fluid, symbolic, values, stack, rhs: vec![0.0; n], phi: vec![0.0; nx * ny], factor_nnz })
+        Ok(Pressure {
+            nx,
+            ny,
+            unknown,
+            fluid,
+            symbolic,
+            values,
+            stack,
+            rhs: vec![0.0; n],
+            phi: vec![0.0; nx * ny],
+            factor_nnz,
+        })
     }
 
     /// Number of unknowns.
@@ -133,12 +148,21 @@ impl Pressure {
     #[inline(always)]
     pub fn cell_flux(u: &Padded, v: &Padded, grid: &Grid, i: usize, j: usize) -> f64 {
         let (ii, jj) = (i as isize, j as isize);
-        (u.get(ii + 1, jj) - u.get(ii, jj)) * grid.dy[j] + (v.get(ii, jj + 1) - v.get(ii, jj)) * grid.dx[i]
+        (u.get(ii + 1, jj) - u.get(ii, jj)) * grid.dy[j]
+            + (v.get(ii, jj + 1) - v.get(ii, jj)) * grid.dx[i]
     }
 
     /// Projects (u, v) onto the discretely divergence-free space, in place; returns p = φ/Δt in `p`.
     /// Only faces between two fluid cells change.
-    pub fn project(&mut self, u: &mut Padded, v: &mut Padded, grid: &Grid, m: &Metrics, dt: f64, p: &mut [f64]) {
+    pub fn project(
+        &mut self,
+        u: &mut Padded,
+        v: &mut Padded,
+        grid: &Grid,
+        m: &Metrics,
+        dt: f64,
+        p: &mut [f64],
+    ) {
         let (nx, ny) = (self.nx, self.ny);
         for j in 0..ny {
             for i in 0..nx {
@@ -195,8 +219,11 @@ impl Pressure {
         }
         let shift = ring / count as f64;
         for (k, pk) in p.iter_mut().enumerate() {
-            *pk = if fluid[k] { (phi[k] - shift) * inv_dt } else { 0.0 };
+            *pk = if fluid[k] {
+                (phi[k] - shift) * inv_dt
+            } else {
+                0.0
+            };
         }
     }
 }
-

@@ -22,7 +22,8 @@ impl Observer for Quiet {
 
 /// The configuration the binary would run for these arguments (after `platefall`).
 pub fn config(args: &[&str]) -> RunConfig {
-    let cli = Cli::try_parse_from(std::iter::once("platefall").chain(args.iter().copied())).expect("arguments parse");
+    let cli = Cli::try_parse_from(std::iter::once("platefall").chain(args.iter().copied()))
+        .expect("arguments parse");
     run_config(&cli.command).expect("configuration is valid")
 }
 
