@@ -324,6 +324,3 @@ pub fn prescribed_state(case: &Case, t: f64) -> BodyState {
         } => translate(v0, gamma0, gamma0 + alpha0, 0.0),
     }
 }
-
-/// Default AB start for coupled runs.
-pub const DEFAULT_AB_START: AbStart = AbStart::Ramp;
