@@ -5,9 +5,7 @@
 use std::f64::consts::PI;
 use std::time::Instant;
 
-use crate::body::{
-    inertial_to_body, wrap_angle, AbStart, BodyState, Dof, Loads as BodyLoads, RigidBody,
-};
+use crate::body::{inertial_to_body, wrap_angle, BodyState, Dof, Loads as BodyLoads, RigidBody};
 use crate::config::{Case, RunConfig};
 use crate::flow::{FlowError, FlowSolver, Frame, OuterBc};
 use crate::grid::Grid;
