@@ -194,7 +194,7 @@ pub struct FreeArgs {
 #[derive(Args, Debug)]
 pub struct BenchArgs {
     /// Cells per chord of the grids to time (each with the default extent and growth cap).
-    #[arg(long, value_delimiter = ',', default_values_t = vec![32, 64, 128, 256])]
+    #[arg(long, value_delimiter = ',', default_values_t = vec![32, 64, 128, 384])]
     pub resolutions: Vec<usize>,
     /// Steps timed per grid (after 5 warm-up steps).
     #[arg(long, default_value_t = 50)]
