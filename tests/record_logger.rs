@@ -478,6 +478,12 @@ fn serve_keeps_the_run_for_a_late_viewer() {
         let _ = std::process::Command::new("kill")
             .args(["-INT", &child.id().to_string()])
             .status();
+        // Ctrl-C makes the viewer finalise and exit; never wait for it unboundedly.
+        let t1 = Instant::now();
+        while child.try_wait().ok().flatten().is_none() && t1.elapsed() < Duration::from_secs(10) {
+            std::thread::sleep(Duration::from_millis(100));
+        }
+        let _ = child.kill();
         let _ = child.wait();
         assert_eq!(rows, 300, "the late viewer got every step");
     } else {

@@ -292,8 +292,22 @@ fn decode_impl(path: &Path, partial: bool) -> Decoded {
 
 /// `rerun` CLI from the venv of the brief, if present (for the optional outside checks).
 pub fn rerun_cli() -> Option<PathBuf> {
-    ["/tmp/rrvenv/bin/rerun", "/tmp/rrview/venv/bin/rerun"]
-        .iter()
-        .map(PathBuf::from)
-        .find(|p| p.exists())
+    // The real binary inside the wheel, not the `bin/rerun` Python shim: a signal sent to the shim
+    // does not reach the binary, so the shim would never exit. `PLATEFALL_RERUN_CLI` (set by
+    // `.ci/run`) wins; otherwise look in the CI venv and the usual scratch venvs.
+    if let Some(p) = std::env::var_os("PLATEFALL_RERUN_CLI").map(PathBuf::from) {
+        return p.exists().then_some(p);
+    }
+    let venvs = [
+        concat!(env!("CARGO_MANIFEST_DIR"), "/target/ci-venv"),
+        "/tmp/rrvenv",
+        "/tmp/rrview/venv",
+    ];
+    venvs.iter().find_map(|venv| {
+        let lib = Path::new(venv).join("lib");
+        std::fs::read_dir(&lib).ok()?.flatten().find_map(|py| {
+            let bin = py.path().join("site-packages/rerun_sdk/rerun_cli/rerun");
+            bin.exists().then_some(bin)
+        })
+    })
 }
