@@ -12,7 +12,7 @@ use std::sync::Arc;
 use anyhow::Context;
 use clap::Parser;
 
-use platefall::cli::{run_config, BenchArgs, Cli, Command};
+use platefall::cli::{run_config, BenchArgs, Cli, Command, SolverArgs};
 use platefall::config::RunConfig;
 use platefall::record::messages::{FieldSnapshot, RunInfo, RunOutcome, RunStatus, StepSample};
 use platefall::record::{self, options::RecordArgs, Logger};
@@ -34,23 +34,14 @@ fn main() -> ExitCode {
     }
 }
 
-fn record_args(cmd: &Command) -> &RecordArgs {
+/// The options every case subcommand shares: the solver's and the recording's.
+fn case_args(cmd: &Command) -> (&SolverArgs, &RecordArgs) {
     match cmd {
-        Command::Static(a) => &a.record,
-        Command::Forced(a) => &a.record,
-        Command::Pinned(a) => &a.record,
-        Command::Free(a) => &a.record,
-        Command::Bench(_) => unreachable!("bench has no recording"),
-    }
-}
-
-fn summary_path(cmd: &Command) -> Option<&Path> {
-    match cmd {
-        Command::Static(a) => a.solver.summary.as_deref(),
-        Command::Forced(a) => a.solver.summary.as_deref(),
-        Command::Pinned(a) => a.solver.summary.as_deref(),
-        Command::Free(a) => a.solver.summary.as_deref(),
-        Command::Bench(_) => None,
+        Command::Static(a) => (&a.solver, &a.record),
+        Command::Forced(a) => (&a.solver, &a.record),
+        Command::Pinned(a) => (&a.solver, &a.record),
+        Command::Free(a) => (&a.solver, &a.record),
+        Command::Bench(_) => unreachable!("bench is not a case"),
     }
 }
 
@@ -125,7 +116,9 @@ fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     // Everything is validated before anything runs or is written.
     let config: RunConfig = run_config(cmd)?;
     let case = config.case.name();
-    if let Some(p) = summary_path(cmd) {
+    let (solver_args, record_args) = case_args(cmd);
+    let summary_path = solver_args.summary.as_deref();
+    if let Some(p) = summary_path {
         check_writable("--summary", p)?;
     }
     // A run that stops after a number of turns has no known end time: show no ETA rather than a
@@ -135,7 +128,7 @@ fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     } else {
         config.t_end
     };
-    let opts = record_args(cmd).resolve(case, progress_end)?;
+    let opts = record_args.resolve(case, progress_end)?;
     if let Some(b) = &config.body {
         if let Some(advice) = platefall::body::coupling_advice(&b.props) {
             eprintln!("warning: {advice}");
@@ -184,7 +177,7 @@ fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     let summary = summarize(&config, &rec);
     let text = report(&config, &summary);
     let summary_json = serde_json::to_string_pretty(&summary)?;
-    if let Some(p) = summary_path(cmd) {
+    if let Some(p) = summary_path {
         write_atomically(p, summary_json.as_bytes())
             .with_context(|| format!("writing --summary {}", p.display()))?;
     }
