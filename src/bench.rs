@@ -6,10 +6,9 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::config::Case;
 use crate::flow::{FlowParams, FlowSolver, OuterBc};
 use crate::grid::{Grid, GridSpec};
-use crate::sim::{frame_of, prescribed_state};
+use crate::sim::{Case, SimError};
 
 #[derive(Clone, Debug, Serialize)]
 pub struct BenchRow {
@@ -27,12 +26,12 @@ pub struct BenchRow {
 
 /// Times `steps` steps of a plate translating at α = 0.4 and spinning at θ̇ = 1 (so every term of the
 /// mixed-frame equations is active) after 5 warm-up steps.
-pub fn bench_one(resolution: usize, steps: usize) -> Result<BenchRow, String> {
+pub fn bench_one(resolution: usize, steps: usize) -> Result<BenchRow, SimError> {
     let spec = GridSpec::modern(resolution);
-    let grid = Grid::new(&spec).map_err(|e| e.0)?;
+    let grid = Grid::new(&spec)?;
     let (nx, ny, cells) = (grid.nx, grid.ny, grid.cells());
     let case = Case::Forced {
-        rate: 1.0,
+        omega: 1.0,
         spinup: 0.0,
     };
     let t0 = Instant::now();
@@ -40,18 +39,17 @@ pub fn bench_one(resolution: usize, steps: usize) -> Result<BenchRow, String> {
         grid,
         FlowParams::default(),
         OuterBc::FarField,
-        frame_of(&prescribed_state(&case, 0.4)),
-    )
-    .map_err(|e| e.to_string())?;
+        case.prescribed_state(0.4).frame(),
+    )?;
     let setup_seconds = t0.elapsed().as_secs_f64();
     let (mut t_mom, mut t_proj) = (0.0, 0.0);
     for k in 0..steps + 5 {
         let a = Instant::now();
-        let limit = flow.prepare().map_err(|e| e.to_string())?;
+        let limit = flow.prepare()?;
         let b = Instant::now();
         let dt = limit.min(0.01);
-        let next = frame_of(&prescribed_state(&case, 0.4 + flow.t + dt));
-        flow.advance(dt, next).map_err(|e| e.to_string())?;
+        let next = case.prescribed_state(0.4 + flow.t + dt).frame();
+        flow.advance(dt, next)?;
         let c = Instant::now();
         if k >= 5 {
             t_mom += (b - a).as_secs_f64();

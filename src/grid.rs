@@ -12,7 +12,7 @@
 //! whose first interval equals h when `C = n ln(1 + (h/L)(e^C − 1))` (solved by [`stretch_coefficient`]).
 //! Consecutive intervals of this map grow by the constant ratio r = e^{C/n}, so a cap on the growth
 //! ratio fixes the number of intervals ([`intervals_for_growth`]).
-use std::fmt;
+use crate::param::{check_range, check_whole, InputError, Param};
 
 /// What the user asks for: resolution, plate thickness, extent and growth cap.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -39,17 +39,6 @@ pub enum Stretch {
     Intervals { nx: usize, ny: usize },
 }
 
-/// Grid construction errors: each names the value and the accepted range.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GridError(pub String);
-
-impl fmt::Display for GridError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.0)
-    }
-}
-impl std::error::Error for GridError {}
-
 impl GridSpec {
     /// The grid of the seed (N = 16, one-cell plate, 24 × 27 intervals over 10 chords).
     pub fn seed() -> Self {
@@ -75,42 +64,26 @@ impl GridSpec {
     }
 
     /// Checks every input, naming the bad value and the accepted range.
-    pub fn validate(&self) -> Result<(), GridError> {
+    pub fn validate(&self) -> Result<(), InputError> {
         let n = self.resolution;
-        if !(4..=1024).contains(&n) {
-            return Err(GridError(format!(
-                "resolution {n} is out of range: cells per chord must be in 4..=1024"
-            )));
-        }
+        check_whole(Param::Resolution, n, 4, 1024)?;
         let h = 1.0 / n as f64;
-        if !(self.thickness.is_finite() && self.thickness > 0.0 && self.thickness <= 0.5) {
-            return Err(GridError(format!(
-                "plate thickness {} is out of range: must be in (0, 0.5] chords",
-                self.thickness
-            )));
-        }
-        for (name, e) in [("extent_x", self.extent_x), ("extent_y", self.extent_y)] {
-            if !(e.is_finite() && (1.0..=200.0).contains(&e)) {
-                return Err(GridError(format!(
-                    "{name} {e} is out of range: must be in [1, 200] chords"
-                )));
-            }
-        }
+        check_range(Param::Thickness, self.thickness, 0.0, 0.5, true)?;
+        check_range(Param::ExtentX, self.extent_x, 1.0, 200.0, false)?;
+        check_range(Param::ExtentY, self.extent_y, 1.0, 200.0, false)?;
         match self.stretch {
-            Stretch::GrowthCap(r) => {
-                if !(r.is_finite() && r > 1.0 && r <= 1.5) {
-                    return Err(GridError(format!(
-                        "growth cap {r} is out of range: must be in (1, 1.5]"
-                    )));
-                }
-            }
+            Stretch::GrowthCap(r) => check_range(Param::Growth, r, 1.0, 1.5, true)?,
             Stretch::Intervals { nx, ny } => {
-                for (name, k, ext) in [("x", nx, self.extent_x), ("y", ny, self.extent_y)] {
+                for (k, ext) in [(nx, self.extent_x), (ny, self.extent_y)] {
                     if k < 1 || k as f64 * h >= ext {
-                        return Err(GridError(format!(
-                            "{k} stretched intervals in {name} cannot span {ext} chords from spacing {h}: need 1 <= n < {}",
-                            (ext / h).ceil()
-                        )));
+                        return Err(InputError::Inconsistent {
+                            param: Param::StretchIntervals,
+                            value: k as f64,
+                            why: format!(
+                                "they cannot span {ext} chords from spacing {h}: need 1 <= n < {}",
+                                (ext / h).ceil()
+                            ),
+                        });
                     }
                 }
             }
@@ -209,7 +182,7 @@ pub struct Grid {
 
 impl Grid {
     /// Builds the grid; the input is validated first.
-    pub fn new(spec: &GridSpec) -> Result<Grid, GridError> {
+    pub fn new(spec: &GridSpec) -> Result<Grid, InputError> {
         spec.validate()?;
         let n = spec.resolution;
         let h = 1.0 / n as f64;
@@ -312,12 +285,34 @@ impl Grid {
         (self.dx[0], self.dy[0])
     }
 
-    /// The plain-data geometry for recording and post-processing.
-    pub fn geometry(&self) -> crate::record::messages::GridGeometry {
-        crate::record::messages::GridGeometry {
+    /// The plain-data geometry for post-processing and recording.
+    pub fn geometry(&self) -> GridGeometry {
+        GridGeometry {
             xn: self.xn.clone(),
             yn: self.yn.clone(),
             solid: self.solid_mask(),
         }
+    }
+}
+
+/// The body-fixed stretched Cartesian grid (SPEC §4) as plain data: chord units, body axes.
+///
+/// Layout is row-major with x fastest: cell (i, j) has index `i + nx * j`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GridGeometry {
+    /// Node (cell-face) x coordinates, length nx + 1, increasing.
+    pub xn: Vec<f64>,
+    /// Node (cell-face) y coordinates, length ny + 1, increasing.
+    pub yn: Vec<f64>,
+    /// true where the cell is inside the plate (solid), length nx * ny.
+    pub solid: Vec<bool>,
+}
+
+impl GridGeometry {
+    pub fn nx(&self) -> usize {
+        self.xn.len() - 1
+    }
+    pub fn ny(&self) -> usize {
+        self.yn.len() - 1
     }
 }

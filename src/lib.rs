@@ -1,16 +1,28 @@
 //! platefall: a thin plate falling freely through a viscous fluid.
 //!
-//! The physics core (`grid`, `flow`, `body`, `sim`) is free of I/O and of Rerun types;
-//! `post` turns raw fields into pictures and `record` turns plain messages into Rerun.
-pub mod analysis;
-pub mod bench;
+//! Layers, each using only those above it in this list:
+//!
+//! 1. Physics — [`param`] (named inputs and their errors), [`grid`], [`flow`], [`body`], and
+//!    [`sim`] (the coupled time loop, the motion laws, the run description and the solver's own
+//!    outputs). No I/O, no clock, no viewer.
+//! 2. Run description — [`config`]: presets and physical units behind a run's numbers.
+//! 3. Post-processing — [`post`]: the summary and report of a run, pictures of its fields.
+//! 4. Recording — [`record`]: the logger thread, CSV, progress and (feature `viewer`) Rerun.
+//! 5. Command line — [`cli`] (the only layer that knows clap) and [`bench`].
+//!
+//! Run a case from Rust with [`sim::Simulation`]; see `examples/static_drag.rs`.
+pub mod param;
+
 pub mod body;
-pub mod config;
 pub mod flow;
 pub mod grid;
-pub mod post;
-pub mod record;
 pub mod sim;
-pub mod summary;
 
+pub mod config;
+
+pub mod post;
+
+pub mod record;
+
+pub mod bench;
 pub mod cli;

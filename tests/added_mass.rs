@@ -5,7 +5,7 @@
 mod common;
 use std::f64::consts::PI;
 
-fn first_step(args: &[&str]) -> platefall::record::messages::StepSample {
+fn first_step(args: &[&str]) -> platefall::sim::StepSample {
     let cfg = common::config(args);
     let mut sim = platefall::sim::Simulation::new(cfg).unwrap();
     sim.step().unwrap()

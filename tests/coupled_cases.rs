@@ -1,8 +1,8 @@
 //! Cases B–D (SPEC §1, §6, §8) at the seed's resolution N = 16: short CI runs.
 mod common;
-use platefall::analysis::{dominant_frequency, Window};
-use platefall::record::messages::RunStatus;
+use platefall::post::analysis::{dominant_frequency, TimeWindow};
 use platefall::sim::RunRecord;
+use platefall::sim::RunStatus;
 use std::f64::consts::PI;
 
 /// Net angle θ turned between the release (held attitude until then) and the end of the run.
@@ -27,7 +27,7 @@ fn forced_rotation_lift_is_periodic_at_the_forced_rate() {
         "12",
     ]);
     assert_eq!(rec.status, RunStatus::Completed);
-    let w = Window { t0: 3.0, t1: 12.0 };
+    let w = TimeWindow { t0: 3.0, t1: 12.0 };
     let f = dominant_frequency(&rec.samples, w, 0.02, |x| x.cl).expect("periodic lift");
     let expected = 2.0 / PI;
     assert!(

@@ -7,8 +7,8 @@ use platefall::grid::{Grid, GridSpec, Stretch};
 /// The frame of the manufactured solution: the centre moves along the body axes at (a, b) and the
 /// body spins at θ̇ (all nonzero, so every grid-velocity and rotation term is exercised).
 const FRAME: Frame = Frame {
-    a: 0.7,
-    b: -0.4,
+    u0: 0.7,
+    v0: -0.4,
     omega: 0.9,
 };
 const RE: f64 = 100.0;
@@ -184,8 +184,8 @@ fn rigid_rotation_with_a_spinning_plate_is_steady_with_the_centripetal_pressure(
         stretch: Stretch::GrowthCap(1.1),
     };
     let frame = Frame {
-        a: 0.0,
-        b: 0.0,
+        u0: 0.0,
+        v0: 0.0,
         omega: om,
     };
     let params = FlowParams {
@@ -237,8 +237,8 @@ fn velocity_is_discretely_divergence_free_after_every_step() {
     // A plate translating and spinning in the far-field configuration (convective outflow).
     let spec = GridSpec::modern(16);
     let frame = Frame {
-        a: 0.92,
-        b: -0.39,
+        u0: 0.92,
+        v0: -0.39,
         omega: 0.8,
     };
     let mut s = FlowSolver::new(

@@ -64,12 +64,15 @@ fn spacing_is_monotone_and_growth_within_the_cap() {
 #[test]
 fn bad_grid_input_is_refused_with_the_range() {
     let mut s = GridSpec::modern(0);
-    let e = Grid::new(&s).unwrap_err().0;
+    let e = Grid::new(&s).unwrap_err().to_string();
     assert!(e.contains("resolution 0") && e.contains("4..=1024"), "{e}");
     s = GridSpec::modern(32);
     s.thickness = f64::NAN;
-    assert!(Grid::new(&s).unwrap_err().0.contains("thickness"));
+    assert!(Grid::new(&s).unwrap_err().to_string().contains("thickness"));
     s = GridSpec::modern(32);
     s.stretch = Stretch::GrowthCap(0.9);
-    assert!(Grid::new(&s).unwrap_err().0.contains("growth cap"));
+    assert!(Grid::new(&s)
+        .unwrap_err()
+        .to_string()
+        .contains("growth cap"));
 }

@@ -30,8 +30,8 @@ static GLOBAL: Counting = Counting;
 fn flow_steps_allocate_nothing() {
     // A translating, spinning plate with the far-field boundary: every phase of the step runs.
     let frame = Frame {
-        a: 0.9,
-        b: -0.4,
+        u0: 0.9,
+        v0: -0.4,
         omega: 1.2,
     };
     let mut s = FlowSolver::new(

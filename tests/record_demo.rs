@@ -10,8 +10,9 @@ mod record_common;
 
 use std::time::Instant;
 
-use platefall::record::messages::{RunOutcome, RunStatus};
+use platefall::record::messages::RunOutcome;
 use platefall::record::{spawn_logger, RecordOptions};
+use platefall::sim::RunStatus;
 use record_common::*;
 
 fn env_f64(name: &str, default: f64) -> f64 {

@@ -4,8 +4,9 @@ mod record_common;
 
 use std::time::{Duration, Instant};
 
-use platefall::record::messages::{RunOutcome, RunStatus};
+use platefall::record::messages::RunOutcome;
 use platefall::record::{paths, spawn_logger, RecordOptions, CSV_HEADER};
+use platefall::sim::RunStatus;
 use record_common::*;
 
 fn outcome(status: RunStatus) -> RunOutcome {
@@ -20,7 +21,7 @@ fn outcome(status: RunStatus) -> RunOutcome {
 /// Returns (fields accepted, fields due).
 fn drive(
     logger: &mut platefall::record::Logger,
-    g: &platefall::record::messages::GridGeometry,
+    g: &platefall::grid::GridGeometry,
     steps: u64,
     dt: f64,
 ) -> (u64, u64) {

@@ -11,6 +11,7 @@
 use std::f64::consts::PI;
 
 use super::rigid::PlateProps;
+use crate::param::{InputError, Param};
 
 /// 2-D added mass of a flat plate of chord 1 in normal motion, π(c/2)²ρ = π/4 (by ρc²).
 pub const PLATE_ADDED_MASS: f64 = PI / 4.0;
@@ -55,27 +56,36 @@ pub fn coupling_advice(props: &PlateProps) -> Option<String> {
 }
 
 /// Refuse properties for which explicit coupling is known to diverge: m* ≤ π/4 or I* ≤ π/128
-/// (added-to-body ratio ≥ 1), or non-finite values. The error names the value and the accepted range.
-pub fn coupling_check(props: &PlateProps) -> Result<(), String> {
-    if !(props.mass.is_finite() && props.mass > PLATE_ADDED_MASS) {
-        return Err(format!(
-            "m* = {} is not accepted: explicit coupling diverges when the added mass π/4 ≈ {:.4} \
-             is ≥ the plate mass (ratio {:.3}); accepted range m* > π/4 ≈ {:.4}",
+/// (added-to-body ratio ≥ 1), or non-finite values.
+pub fn coupling_check(props: &PlateProps) -> Result<(), InputError> {
+    let limits = [
+        (
+            Param::Mass,
+            "m*",
             props.mass,
             PLATE_ADDED_MASS,
-            PLATE_ADDED_MASS / props.mass,
-            PLATE_ADDED_MASS
-        ));
-    }
-    if !(props.inertia.is_finite() && props.inertia > PLATE_ADDED_INERTIA) {
-        return Err(format!(
-            "I* = {} is not accepted: explicit coupling diverges when the added pitch inertia \
-             π/128 ≈ {:.5} is ≥ the plate inertia (ratio {:.3}); accepted range I* > π/128 ≈ {:.5}",
+            "added mass π/4",
+        ),
+        (
+            Param::Inertia,
+            "I*",
             props.inertia,
             PLATE_ADDED_INERTIA,
-            PLATE_ADDED_INERTIA / props.inertia,
-            PLATE_ADDED_INERTIA
-        ));
+            "added pitch inertia π/128",
+        ),
+    ];
+    for (param, symbol, value, added, what) in limits {
+        if !(value.is_finite() && value > added) {
+            return Err(InputError::Inconsistent {
+                param,
+                value,
+                why: format!(
+                    "explicit coupling diverges when the {what} ≈ {added:.5} is ≥ the plate's \
+                     (ratio {:.3}); accepted range {symbol} > {added:.5}",
+                    added / value
+                ),
+            });
+        }
     }
     Ok(())
 }

@@ -7,6 +7,7 @@
 use std::f64::consts::PI;
 
 use super::adams::{AbError, AbStart, AdamsBashforth};
+use crate::flow::Frame;
 
 /// Non-dimensional plate properties (SPEC §2): m* = m/(ρc²b), I* = I/(ρc⁴b), g* = g c/U².
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -50,7 +51,7 @@ pub enum Dof {
 /// Fluid load per unit span on the plate (SPEC §5): force (F_X, F_Y) in INERTIAL axes and moment M
 /// about the centre (counter-clockwise positive), non-dimensional by ρU²c and ρU²c².
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
-pub struct Loads {
+pub struct InertialLoads {
     /// F_X (inertial).
     pub fx: f64,
     /// F_Y (inertial).
@@ -59,8 +60,8 @@ pub struct Loads {
     pub moment: f64,
 }
 
-impl Loads {
-    /// Loads from a force given in BODY axes (x along the chord), rotated to inertial axes by θ
+impl InertialLoads {
+    /// InertialLoads from a force given in BODY axes (x along the chord), rotated to inertial axes by θ
     /// (SPEC §3: X = R(θ) x).
     pub fn from_body_axes(theta: f64, fx_body: f64, fy_body: f64, moment: f64) -> Self {
         let (fx, fy) = body_to_inertial(theta, fx_body, fy_body);
@@ -124,17 +125,27 @@ impl BodyState {
         wrap_angle(self.theta - self.flight_path_angle())
     }
 
-    /// Translation velocity of the centre in body axes, (ẋ₀cosθ + ẏ₀sinθ, −ẋ₀sinθ + ẏ₀cosθ)
-    /// (SPEC §3, the translation part of g), equal to (V cos α, −V sin α).
-    pub fn body_axes_velocity(&self) -> (f64, f64) {
-        inertial_to_body(self.theta, self.xdot, self.ydot)
+    /// The motion as the flow solver sees it (SPEC §3): the centre's velocity along the body axes,
+    /// (ẋ₀cosθ + ẏ₀sinθ, −ẋ₀sinθ + ẏ₀cosθ) = (V cos α, −V sin α), and θ̇.
+    pub fn frame(&self) -> Frame {
+        let (u0, v0) = inertial_to_body(self.theta, self.xdot, self.ydot);
+        Frame {
+            u0,
+            v0,
+            omega: self.omega,
+        }
     }
 }
 
 /// Time derivative of (X, Y, θ, Ẋ, Ẏ, θ̇) under the Cartesian equations of SPEC §6:
 /// `Free`: (Ẋ, Ẏ, θ̇, F_X/m*, F_Y/m* − g*, M/I*); `PitchOnly`: (Ẋ, Ẏ, θ̇, 0, 0, M/I*);
 /// `Prescribed`: (Ẋ, Ẏ, θ̇, 0, 0, 0) (constant velocity; the real prescribed motion is the caller's).
-pub fn state_derivative(props: &PlateProps, dof: Dof, s: &BodyState, loads: &Loads) -> [f64; 6] {
+pub fn state_derivative(
+    props: &PlateProps,
+    dof: Dof,
+    s: &BodyState,
+    loads: &InertialLoads,
+) -> [f64; 6] {
     let (ax, ay, alpha) = match dof {
         Dof::Prescribed => (0.0, 0.0, 0.0),
         Dof::PitchOnly => (0.0, 0.0, loads.moment / props.inertia),
@@ -156,7 +167,7 @@ pub fn advance(
     dof: Dof,
     t: f64,
     state: &mut BodyState,
-    loads: &Loads,
+    loads: &InertialLoads,
     h: f64,
 ) {
     if dof == Dof::Prescribed {
@@ -219,12 +230,12 @@ impl RigidBody {
     }
 
     /// Derivative of the current state under `loads` ([`state_derivative`]).
-    pub fn derivative(&self, loads: &Loads) -> [f64; 6] {
+    pub fn derivative(&self, loads: &InertialLoads) -> [f64; 6] {
         state_derivative(&self.props, self.dof, &self.state, loads)
     }
 
     /// Advance t → t + h under the current loads ([`advance`]).
-    pub fn step(&mut self, t: f64, loads: &Loads, h: f64) {
+    pub fn step(&mut self, t: f64, loads: &InertialLoads, h: f64) {
         advance(
             &mut self.ab,
             &self.props,

@@ -10,8 +10,8 @@
 //! [`OuterBc::Prescribed`]: exact velocities on and beyond the boundary, for verification against
 //! exact solutions; the small net flux of the sampled values is removed uniformly over the boundary.
 use super::array::{Padded, GHOST};
-use super::metrics::Metrics;
-use super::momentum::Frame;
+use super::frame::Frame;
+use super::metrics::{Component, Metrics};
 
 /// A velocity field (x, y, t) ↦ (u, v) in body axes.
 pub type VelocityFn = Box<dyn Fn(f64, f64, f64) -> (f64, f64) + Send + Sync>;
@@ -45,66 +45,157 @@ pub fn fill_ghosts(
     let ny = u.nj as isize;
     match bc {
         OuterBc::Prescribed(f) => {
-            for j in -G..ny + G {
-                for i in -G..nx + 1 + G {
-                    if i < 0 || i > nx || j < 0 || j >= ny {
-                        u.set(i, j, f(m.x.node(i), m.y.centre(j), t).0);
-                    }
+            m.for_faces(Component::U, -G..nx + 1 + G, -G..ny + G, |i, j, x, y| {
+                if i < 0 || i > nx || j < 0 || j >= ny {
+                    u.set(i, j, f(x, y, t).0);
                 }
-            }
-            for j in -G..ny + 1 + G {
-                for i in -G..nx + G {
-                    if i < 0 || i >= nx || j < 0 || j > ny {
-                        v.set(i, j, f(m.x.centre(i), m.y.node(j), t).1);
-                    }
+            });
+            m.for_faces(Component::V, -G..nx + G, -G..ny + 1 + G, |i, j, x, y| {
+                if i < 0 || i >= nx || j < 0 || j > ny {
+                    v.set(i, j, f(x, y, t).1);
                 }
-            }
+            });
         }
         OuterBc::FarField => {
-            // u: normal ghosts beyond the left/right boundary faces copy the boundary value.
-            for j in 0..ny {
-                let (l, r) = (u.get(0, j), u.get(nx, j));
-                for k in 1..=G {
-                    u.set(-k, j, l);
-                    u.set(nx + k, j, r);
-                }
-            }
-            // v: normal ghosts beyond the bottom/top boundary faces.
-            for i in 0..nx {
-                let (b, t_) = (v.get(i, 0), v.get(i, ny));
-                for k in 1..=G {
-                    v.set(i, -k, b);
-                    v.set(i, ny + k, t_);
-                }
-            }
-            // u: tangential ghosts below/above (all columns, ghosts included).
-            for i in -G..nx + 1 + G {
-                let ic = i.clamp(0, nx - 1);
-                let x = m.x.centre(ic);
-                let in_bottom = v.get(ic, 0) - frame.gy(x) > 0.0; // entering through y = y_min
-                let in_top = v.get(ic, ny) - frame.gy(x) < 0.0;
-                for k in 1..=G {
-                    let b = u.get(i, k - 1);
-                    u.set(i, -k, if in_bottom { -b } else { u.get(i, 0) });
-                    let t_ = u.get(i, ny - k);
-                    u.set(i, ny - 1 + k, if in_top { -t_ } else { u.get(i, ny - 1) });
-                }
-            }
-            // v: tangential ghosts left/right (all rows, ghosts included).
-            for j in -G..ny + 1 + G {
-                let jc = j.clamp(0, ny - 1);
-                let y = m.y.centre(jc);
-                let in_left = u.get(0, jc) - frame.gx(y) > 0.0;
-                let in_right = u.get(nx, jc) - frame.gx(y) < 0.0;
-                for k in 1..=G {
-                    let l = v.get(k - 1, j);
-                    v.set(-k, j, if in_left { -l } else { v.get(0, j) });
-                    let r = v.get(nx - k, j);
-                    v.set(nx - 1 + k, j, if in_right { -r } else { v.get(nx - 1, j) });
-                }
-            }
+            normal_ghosts(u, v);
+            tangential_ghosts(u, v, m, frame);
         }
     }
+}
+
+/// Far field: ghosts beyond the left/right (u) and bottom/top (v) boundary faces copy the
+/// boundary value (zero normal gradient).
+fn normal_ghosts(u: &mut Padded, v: &mut Padded) {
+    let nx = v.ni as isize;
+    let ny = u.nj as isize;
+    for j in 0..ny {
+        let (l, r) = (u.get(0, j), u.get(nx, j));
+        for k in 1..=G {
+            u.set(-k, j, l);
+            u.set(nx + k, j, r);
+        }
+    }
+    for i in 0..nx {
+        let (b, t_) = (v.get(i, 0), v.get(i, ny));
+        for k in 1..=G {
+            v.set(i, -k, b);
+            v.set(i, ny + k, t_);
+        }
+    }
+}
+
+/// Far field: ghosts of the tangential component below/above (u) and left/right (v) of the
+/// domain, ghost columns and rows included: mirrored to zero at the wall where fluid enters
+/// (at rest far away), zero gradient where it leaves.
+fn tangential_ghosts(u: &mut Padded, v: &mut Padded, m: &Metrics, frame: &Frame) {
+    let nx = v.ni as isize;
+    let ny = u.nj as isize;
+    for i in -G..nx + 1 + G {
+        let ic = i.clamp(0, nx - 1);
+        let x = m.x.centre(ic);
+        let in_bottom = v.get(ic, 0) - frame.gy(x) > 0.0; // entering through y = y_min
+        let in_top = v.get(ic, ny) - frame.gy(x) < 0.0;
+        for k in 1..=G {
+            let b = u.get(i, k - 1);
+            u.set(i, -k, if in_bottom { -b } else { u.get(i, 0) });
+            let t_ = u.get(i, ny - k);
+            u.set(i, ny - 1 + k, if in_top { -t_ } else { u.get(i, ny - 1) });
+        }
+    }
+    for j in -G..ny + 1 + G {
+        let jc = j.clamp(0, ny - 1);
+        let y = m.y.centre(jc);
+        let in_left = u.get(0, jc) - frame.gx(y) > 0.0;
+        let in_right = u.get(nx, jc) - frame.gx(y) < 0.0;
+        for k in 1..=G {
+            let l = v.get(k - 1, j);
+            v.set(-k, j, if in_left { -l } else { v.get(0, j) });
+            let r = v.get(nx - k, j);
+            v.set(nx - 1 + k, j, if in_right { -r } else { v.get(nx - 1, j) });
+        }
+    }
+}
+
+/// A normal-velocity face on the outer boundary.
+#[derive(Clone, Copy, Debug)]
+struct OuterFace {
+    c: Component,
+    i: isize,
+    j: isize,
+    /// The same component's face one cell inside.
+    inner: (isize, isize),
+    /// +1 where the outward normal points along +x / +y, −1 otherwise.
+    sign: f64,
+    /// The grid velocity normal to the face.
+    g: f64,
+    /// The face's length and the width of the cell behind it.
+    len: f64,
+    gap: f64,
+}
+
+impl OuterFace {
+    fn get(&self, u: &Padded, v: &Padded) -> f64 {
+        match self.c {
+            Component::U => u.get(self.i, self.j),
+            Component::V => v.get(self.i, self.j),
+        }
+    }
+    fn get_inner(&self, u: &Padded, v: &Padded) -> f64 {
+        let (i, j) = self.inner;
+        match self.c {
+            Component::U => u.get(i, j),
+            Component::V => v.get(i, j),
+        }
+    }
+    fn set(&self, u: &mut Padded, v: &mut Padded, value: f64) {
+        match self.c {
+            Component::U => u.set(self.i, self.j, value),
+            Component::V => v.set(self.i, self.j, value),
+        }
+    }
+}
+
+/// Every normal-velocity face on the outer boundary: left and right u faces row by row, then
+/// bottom and top v faces column by column (a fixed order, so sums over them are reproducible).
+fn outer_faces<'a>(
+    m: &'a Metrics,
+    frame: &'a Frame,
+    nx: isize,
+    ny: isize,
+) -> impl Iterator<Item = OuterFace> + 'a {
+    let (wl, wr) = (m.x.width(0), m.x.width(nx - 1));
+    let (wb, wt) = (m.y.width(0), m.y.width(ny - 1));
+    let u_faces = (0..ny).flat_map(move |j| {
+        let (g, len) = (frame.gx(m.y.centre(j)), m.y.width(j));
+        [(0, 1, -1.0, wl), (nx, nx - 1, 1.0, wr)]
+            .into_iter()
+            .map(move |(i, inner, sign, gap)| OuterFace {
+                c: Component::U,
+                i,
+                j,
+                inner: (inner, j),
+                sign,
+                g,
+                len,
+                gap,
+            })
+    });
+    let v_faces = (0..nx).flat_map(move |i| {
+        let (g, len) = (frame.gy(m.x.centre(i)), m.x.width(i));
+        [(0, 1, -1.0, wb), (ny, ny - 1, 1.0, wt)]
+            .into_iter()
+            .map(move |(j, inner, sign, gap)| OuterFace {
+                c: Component::V,
+                i,
+                j,
+                inner: (i, inner),
+                sign,
+                g,
+                len,
+                gap,
+            })
+    });
+    u_faces.chain(v_faces)
 }
 
 /// Sets the normal velocity on every outer boundary face for the new time level t (state after the
@@ -120,91 +211,56 @@ pub fn set_outer_normals(
 ) {
     let nx = v.ni as isize;
     let ny = u.nj as isize;
-    match bc {
-        OuterBc::Prescribed(f) => {
-            for j in 0..ny {
-                let y = m.y.centre(j);
-                u.set(0, j, f(m.x.node(0), y, t).0);
-                u.set(nx, j, f(m.x.node(nx), y, t).0);
+    for face in outer_faces(m, frame, nx, ny) {
+        let value = match bc {
+            OuterBc::Prescribed(f) => {
+                let (x, y) = m.face_position(face.c, face.i, face.j);
+                let (fu, fv) = f(x, y, t);
+                if face.c == Component::U {
+                    fu
+                } else {
+                    fv
+                }
             }
-            for i in 0..nx {
-                let x = m.x.centre(i);
-                v.set(i, 0, f(x, m.y.node(0), t).1);
-                v.set(i, ny, f(x, m.y.node(ny), t).1);
-            }
-        }
-        OuterBc::FarField => {
             // Convective outflow / rest inflow, from the values at the old time level.
-            let update = |wb: f64, winner: f64, g: f64, sign: f64, gap: f64| -> f64 {
-                let c = sign * (wb - g); // outward relative speed
+            OuterBc::FarField => {
+                let (wb, w_in) = (face.get(u, v), face.get_inner(u, v));
+                let c = face.sign * (wb - face.g); // outward relative speed
                 if c > 0.0 {
-                    wb - dt * c * (wb - winner) / gap
+                    wb - dt * c * (wb - w_in) / face.gap
                 } else {
                     0.0
                 }
-            };
-            for j in 0..ny {
-                let g = frame.gx(m.y.centre(j));
-                let l = update(u.get(0, j), u.get(1, j), g, -1.0, m.x.width(0));
-                let r = update(u.get(nx, j), u.get(nx - 1, j), g, 1.0, m.x.width(nx - 1));
-                u.set(0, j, l);
-                u.set(nx, j, r);
             }
-            for i in 0..nx {
-                let g = frame.gy(m.x.centre(i));
-                let b = update(v.get(i, 0), v.get(i, 1), g, -1.0, m.y.width(0));
-                let t_ = update(v.get(i, ny), v.get(i, ny - 1), g, 1.0, m.y.width(ny - 1));
-                v.set(i, 0, b);
-                v.set(i, ny, t_);
-            }
-        }
+        };
+        face.set(u, v, value);
     }
-    // Net outward flux, then a uniform shift of the faces that take the correction: the outflow faces
-    // in the far field (inflow stays at rest), every face for prescribed values. Two passes with the
-    // same predicate, so nothing is stored.
-    let spread_all = !matches!(bc, OuterBc::FarField);
-    let takes = |w: f64, g: f64, sign: f64| spread_all || sign * (w - g) > 0.0;
+    remove_net_flux(u, v, m, frame, !matches!(bc, OuterBc::FarField));
+}
+
+/// Net outward flux, then a uniform shift of the faces that take the correction: the outflow faces
+/// in the far field (inflow stays at rest), every face for prescribed values (`spread_all`). Two
+/// passes with the same predicate, so nothing is stored.
+fn remove_net_flux(u: &mut Padded, v: &mut Padded, m: &Metrics, frame: &Frame, spread_all: bool) {
+    let nx = v.ni as isize;
+    let ny = u.nj as isize;
+    let takes = |w: f64, f: &OuterFace| spread_all || f.sign * (w - f.g) > 0.0;
     let (mut net, mut len_taking) = (0.0, 0.0);
-    for j in 0..ny {
-        let (g, len) = (frame.gx(m.y.centre(j)), m.y.width(j));
-        for (i, sign) in [(0, -1.0), (nx, 1.0)] {
-            let w = u.get(i, j);
-            net += sign * w * len;
-            if takes(w, g, sign) {
-                len_taking += len;
-            }
-        }
-    }
-    for i in 0..nx {
-        let (g, len) = (frame.gy(m.x.centre(i)), m.x.width(i));
-        for (j, sign) in [(0, -1.0), (ny, 1.0)] {
-            let w = v.get(i, j);
-            net += sign * w * len;
-            if takes(w, g, sign) {
-                len_taking += len;
-            }
+    for face in outer_faces(m, frame, nx, ny) {
+        let w = face.get(u, v);
+        net += face.sign * w * face.len;
+        if takes(w, &face) {
+            len_taking += face.len;
         }
     }
     if len_taking <= 0.0 {
         return;
     }
     let shift = net / len_taking; // outward velocity removed from each face that takes the correction
-    for j in 0..ny {
-        let g = frame.gx(m.y.centre(j));
-        for (i, sign) in [(0, -1.0), (nx, 1.0)] {
-            let w = u.get(i, j);
-            if takes(w, g, sign) {
-                u.set(i, j, w - sign * shift);
-            }
-        }
-    }
-    for i in 0..nx {
-        let g = frame.gy(m.x.centre(i));
-        for (j, sign) in [(0, -1.0), (ny, 1.0)] {
-            let w = v.get(i, j);
-            if takes(w, g, sign) {
-                v.set(i, j, w - sign * shift);
-            }
+    for face in outer_faces(m, frame, nx, ny) {
+        let w = face.get(u, v);
+        if takes(w, &face) {
+            face.set(u, v, w - face.sign * shift);
         }
     }
 }

@@ -103,3 +103,38 @@ impl Metrics {
         }
     }
 }
+
+/// The velocity component a face carries: u on vertical faces (x at a node, y at a centre), v on
+/// horizontal faces (x at a centre, y at a node).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Component {
+    U,
+    V,
+}
+
+impl Metrics {
+    /// Body coordinates of face (i, j) of component `c` (ghost indices allowed).
+    #[inline]
+    pub fn face_position(&self, c: Component, i: isize, j: isize) -> (f64, f64) {
+        match c {
+            Component::U => (self.x.node(i), self.y.centre(j)),
+            Component::V => (self.x.centre(i), self.y.node(j)),
+        }
+    }
+
+    /// Calls `f(i, j, x, y)` for every face of component `c` with i in `is` and j in `js`, row by row.
+    pub fn for_faces(
+        &self,
+        c: Component,
+        is: std::ops::Range<isize>,
+        js: std::ops::Range<isize>,
+        mut f: impl FnMut(isize, isize, f64, f64),
+    ) {
+        for j in js {
+            for i in is.clone() {
+                let (x, y) = self.face_position(c, i, j);
+                f(i, j, x, y);
+            }
+        }
+    }
+}

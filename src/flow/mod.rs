@@ -14,17 +14,18 @@
 //! The hot path allocates nothing after [`FlowSolver::new`].
 pub mod array;
 pub mod boundary;
+pub mod frame;
 pub mod metrics;
 pub mod momentum;
 pub mod plate;
 pub mod pressure;
 
 pub use boundary::{OuterBc, VelocityFn};
-pub use momentum::Frame;
-pub use plate::Loads;
+pub use frame::Frame;
+pub use plate::BodyAxesLoads;
 
 use array::Padded;
-use metrics::Metrics;
+use metrics::{Component, Metrics};
 use pressure::Pressure;
 
 use crate::grid::Grid;
@@ -56,22 +57,16 @@ pub const BLOWUP_FACTOR: f64 = 25.0;
 /// A body force (x, y, t) ↦ (f_x, f_y) added to the momentum equations (for manufactured solutions).
 pub type ForceFn = Box<dyn Fn(f64, f64, f64) -> (f64, f64) + Send + Sync>;
 
-#[derive(Debug, Clone, PartialEq)]
+/// Why the flow solver stopped or could not start.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum FlowError {
-    /// The solution blew up; the message says when.
-    Diverged(String),
+    /// The solution blew up at time `t` (after `step` steps); `reason` says what was seen.
+    #[error("the flow solution diverged at t = {t:.4} (step {step}): {reason}")]
+    Diverged { t: f64, step: u64, reason: String },
     /// The pressure operator could not be built.
+    #[error("the pressure operator could not be built: {0}")]
     Setup(String),
 }
-
-impl std::fmt::Display for FlowError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            FlowError::Diverged(s) | FlowError::Setup(s) => f.write_str(s),
-        }
-    }
-}
-impl std::error::Error for FlowError {}
 
 pub struct FlowSolver {
     pub grid: Grid,
@@ -97,10 +92,10 @@ pub struct FlowSolver {
     pub dt_prev: f64,
     pub steps: u64,
     /// Convective rate max|w|/Δx from the last `prepare`.
-    rate: f64,
+    convective_rate: f64,
     dt_visc: f64,
     prepared: bool,
-    loads: Loads,
+    loads: BodyAxesLoads,
 }
 
 impl FlowSolver {
@@ -137,10 +132,10 @@ impl FlowSolver {
             t: 0.0,
             dt_prev: 0.0,
             steps: 0,
-            rate: 0.0,
+            convective_rate: 0.0,
             dt_visc,
             prepared: false,
-            loads: Loads::default(),
+            loads: BodyAxesLoads::default(),
             grid,
             params,
             metrics,
@@ -157,18 +152,14 @@ impl FlowSolver {
     /// Sets the velocity field from a function of (x, y) (body axes) on every face, then the plate
     /// faces to g. The field is not projected: give a divergence-free one.
     pub fn set_velocity(&mut self, f: impl Fn(f64, f64) -> (f64, f64)) {
-        let m = &self.metrics;
         let (nx, ny) = (self.grid.nx as isize, self.grid.ny as isize);
-        for j in 0..ny {
-            for i in 0..=nx {
-                self.u.set(i, j, f(m.x.node(i), m.y.centre(j)).0);
-            }
-        }
-        for j in 0..=ny {
-            for i in 0..nx {
-                self.v.set(i, j, f(m.x.centre(i), m.y.node(j)).1);
-            }
-        }
+        let (m, u, v) = (&self.metrics, &mut self.u, &mut self.v);
+        m.for_faces(Component::U, 0..nx + 1, 0..ny, |i, j, x, y| {
+            u.set(i, j, f(x, y).0)
+        });
+        m.for_faces(Component::V, 0..nx, 0..ny + 1, |i, j, x, y| {
+            v.set(i, j, f(x, y).1)
+        });
         plate::set_plate_faces(
             &mut self.u,
             &mut self.v,
@@ -199,7 +190,7 @@ impl FlowSolver {
             &mut self.hu,
             &mut self.hv,
         );
-        self.rate = stats.rate;
+        self.convective_rate = stats.convective_rate;
         plate::apply_wall_faces(
             &self.wall_u,
             &self.wall_v,
@@ -216,16 +207,17 @@ impl FlowSolver {
         // Fluid velocities are bounded by a few times the plate's own speeds; far beyond that the
         // explicit scheme has gone unstable.
         let f = &self.frame;
-        let bound = BLOWUP_FACTOR * (1.0 + f.a.hypot(f.b) + f.omega.abs());
-        if stats.max_speed.is_nan() || stats.max_speed > bound || !self.rate.is_finite() {
+        let bound = BLOWUP_FACTOR * (1.0 + f.speed() + f.omega.abs());
+        if stats.max_speed.is_nan() || stats.max_speed > bound || !self.convective_rate.is_finite()
+        {
             return Err(self.diverged(&format!(
                 "the largest velocity {:.3e} exceeds {bound:.1} = {BLOWUP_FACTOR} × (1 + V + |θ̇|)",
                 stats.max_speed
             )));
         }
         self.prepared = true;
-        let dt_conv = if self.rate > 0.0 {
-            self.params.cfl / self.rate
+        let dt_conv = if self.convective_rate > 0.0 {
+            self.params.cfl / self.convective_rate
         } else {
             f64::INFINITY
         };
@@ -240,30 +232,7 @@ impl FlowSolver {
             "FlowSolver::advance needs a positive finite dt, got {dt}"
         );
         self.prepared = false;
-        // Variable-step AB2 weights (Euler on the first step).
-        let (c_new, c_old) = if self.steps == 0 {
-            (1.0, 0.0)
-        } else {
-            let r = dt / self.dt_prev;
-            (1.0 + 0.5 * r, -0.5 * r)
-        };
-        let (nx, ny) = (self.grid.nx as isize, self.grid.ny as isize);
-        for j in 0..ny {
-            for i in 1..nx {
-                let k = self.u.at(i, j);
-                let h = c_new * self.hu.data[k] + c_old * self.hu_old.data[k];
-                self.u.data[k] += dt * h;
-            }
-        }
-        for j in 1..ny {
-            for i in 0..nx {
-                let k = self.v.at(i, j);
-                let h = c_new * self.hv.data[k] + c_old * self.hv_old.data[k];
-                self.v.data[k] += dt * h;
-            }
-        }
-        std::mem::swap(&mut self.hu, &mut self.hu_old);
-        std::mem::swap(&mut self.hv, &mut self.hv_old);
+        self.predict(dt);
         let t_next = self.t + dt;
         self.frame = next;
         plate::set_plate_faces(
@@ -293,6 +262,35 @@ impl FlowSolver {
         self.t = t_next;
         self.dt_prev = dt;
         self.steps += 1;
+        self.update_loads()
+    }
+
+    /// The predictor u* = uⁿ + Δt[(1 + r/2)Hⁿ − (r/2)Hⁿ⁻¹] on the interior faces (variable-step
+    /// AB2, r = Δt/Δtⁿ⁻¹; Euler on the first step); Hⁿ becomes the old right-hand side.
+    fn predict(&mut self, dt: f64) {
+        let (c_new, c_old) = if self.steps == 0 {
+            (1.0, 0.0)
+        } else {
+            let r = dt / self.dt_prev;
+            (1.0 + 0.5 * r, -0.5 * r)
+        };
+        let (nx, ny) = (self.grid.nx as isize, self.grid.ny as isize);
+        let update = |vel: &mut Padded, h: &Padded, h_old: &Padded, is, js| {
+            for j in js {
+                for i in std::ops::Range::clone(&is) {
+                    let k = vel.at(i, j);
+                    vel.data[k] += dt * (c_new * h.data[k] + c_old * h_old.data[k]);
+                }
+            }
+        };
+        update(&mut self.u, &self.hu, &self.hu_old, 1..nx, 0..ny);
+        update(&mut self.v, &self.hv, &self.hv_old, 0..nx, 1..ny);
+        std::mem::swap(&mut self.hu, &mut self.hu_old);
+        std::mem::swap(&mut self.hv, &mut self.hv_old);
+    }
+
+    /// The loads on the plate after a projection; an error if they are not finite.
+    fn update_loads(&mut self) -> Result<(), FlowError> {
         self.loads = plate::loads(
             &self.u,
             &self.v,
@@ -302,24 +300,23 @@ impl FlowSolver {
             &self.frame,
             self.params.re,
         );
-        if !(self.loads.fx.is_finite()
-            && self.loads.fy.is_finite()
-            && self.loads.moment.is_finite())
-        {
+        let l = &self.loads;
+        if !(l.fx.is_finite() && l.fy.is_finite() && l.moment.is_finite()) {
             return Err(self.diverged("the force on the plate is not finite"));
         }
         Ok(())
     }
 
-    fn diverged(&self, what: &str) -> FlowError {
-        FlowError::Diverged(format!(
-            "the flow solution diverged at t = {:.4} (step {}): {what}; try a smaller --cfl or a finer --resolution",
-            self.t, self.steps
-        ))
+    fn diverged(&self, reason: &str) -> FlowError {
+        FlowError::Diverged {
+            t: self.t,
+            step: self.steps,
+            reason: reason.to_string(),
+        }
     }
 
     /// Loads on the plate at the current time level.
-    pub fn loads(&self) -> Loads {
+    pub fn loads(&self) -> BodyAxesLoads {
         self.loads
     }
 
@@ -361,18 +358,13 @@ impl FlowSolver {
 
 /// Adds f(x, y, t) at every interior face to H.
 fn add_forcing(f: &ForceFn, m: &Metrics, t: f64, hu: &mut Padded, hv: &mut Padded) {
-    let (nxu, ny) = (hu.ni as isize, hu.nj as isize);
-    for j in 0..ny {
-        for i in 1..nxu - 1 {
-            let k = hu.at(i, j);
-            hu.data[k] += f(m.x.node(i), m.y.centre(j), t).0;
-        }
-    }
-    let (nx, nyv) = (hv.ni as isize, hv.nj as isize);
-    for j in 1..nyv - 1 {
-        for i in 0..nx {
-            let k = hv.at(i, j);
-            hv.data[k] += f(m.x.centre(i), m.y.node(j), t).1;
-        }
-    }
+    let (nx, ny) = (hv.ni as isize, hu.nj as isize);
+    m.for_faces(Component::U, 1..nx, 0..ny, |i, j, x, y| {
+        let k = hu.at(i, j);
+        hu.data[k] += f(x, y, t).0;
+    });
+    m.for_faces(Component::V, 0..nx, 1..ny, |i, j, x, y| {
+        let k = hv.at(i, j);
+        hv.data[k] += f(x, y, t).1;
+    });
 }

@@ -1,8 +1,8 @@
 //! The plate as solid cells: exact no-slip u = g on its faces (SPEC §3), the near-wall viscous
 //! correction, and the force and moment on it (SPEC §5).
 use super::array::Padded;
+use super::frame::Frame;
 use super::metrics::Metrics;
-use super::momentum::Frame;
 use crate::grid::Grid;
 
 /// Velocity faces on or inside the plate hold the grid-point velocity g (the plate moves rigidly).
@@ -94,7 +94,7 @@ pub fn apply_wall_faces(
 /// Force (body axes) and moment about the centre (counter-clockwise positive), per unit span,
 /// non-dimensional on ρU²c and ρU²c².
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Loads {
+pub struct BodyAxesLoads {
     pub fx: f64,
     pub fy: f64,
     pub moment: f64,
@@ -122,16 +122,27 @@ pub fn loads(
     m: &Metrics,
     frame: &Frame,
     re: f64,
-) -> Loads {
+) -> BodyAxesLoads {
     if !grid.has_plate() {
-        return Loads::default();
+        return BodyAxesLoads::default();
     }
+    let mut acc = pressure_loads(p, grid);
+    let (fx_pressure, fy_pressure) = (acc.0, acc.1);
+    add_shear_loads(u, v, grid, m, frame, 1.0 / re, &mut acc);
+    BodyAxesLoads {
+        fx: acc.0,
+        fy: acc.1,
+        moment: acc.2,
+        fx_pressure,
+        fy_pressure,
+    }
+}
+
+/// (F_x, F_y, M) of the pressure on the four faces, each taking the adjacent fluid cell's value.
+fn pressure_loads(p: &[f64], grid: &Grid) -> (f64, f64, f64) {
     let nx = grid.nx;
-    let mu = 1.0 / re;
-    let (x_lo, x_hi) = (grid.xn[grid.i0], grid.xn[grid.i1]);
-    let (y_lo, y_hi) = (grid.yn[grid.j0], grid.yn[grid.j1]);
     let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
-    // Pressure on the top and bottom faces.
+    // Top and bottom faces.
     for i in grid.i0..grid.i1 {
         let (x, len) = (grid.xc[i], grid.dx[i]);
         let top = p[i + nx * grid.j1];
@@ -140,7 +151,7 @@ pub fn loads(
         fy += f;
         mz += x * f;
     }
-    // Pressure on the right and left ends.
+    // Right and left ends.
     for j in grid.j0..grid.j1 {
         let (y, len) = (grid.yc[j], grid.dy[j]);
         let right = p[grid.i1 + nx * j];
@@ -149,8 +160,23 @@ pub fn loads(
         fx += f;
         mz -= y * f;
     }
-    let (fxp, fyp) = (fx, fy);
-    // Shear on the top and bottom faces (u parallel).
+    (fx, fy, mz)
+}
+
+/// Adds the viscous shear μ (u − g)/(distance to the wall) on the four faces to `acc`.
+fn add_shear_loads(
+    u: &Padded,
+    v: &Padded,
+    grid: &Grid,
+    m: &Metrics,
+    frame: &Frame,
+    mu: f64,
+    acc: &mut (f64, f64, f64),
+) {
+    let (x_lo, x_hi) = (grid.xn[grid.i0], grid.xn[grid.i1]);
+    let (y_lo, y_hi) = (grid.yn[grid.j0], grid.yn[grid.j1]);
+    let (fx, fy, mz) = (&mut acc.0, &mut acc.1, &mut acc.2);
+    // Top and bottom faces (u parallel).
     for i in grid.i0..=grid.i1 {
         let ii = i as isize;
         let len = overlap(m.x.centre(ii - 1), m.x.centre(ii), x_lo, x_hi);
@@ -158,10 +184,10 @@ pub fn loads(
         let jb = grid.j0 as isize - 1;
         let tt = mu * (u.get(ii, jt) - frame.gx(m.y.centre(jt))) / (m.y.centre(jt) - y_hi);
         let tb = mu * (u.get(ii, jb) - frame.gx(m.y.centre(jb))) / (y_lo - m.y.centre(jb));
-        fx += (tt + tb) * len;
-        mz -= (y_hi * tt + y_lo * tb) * len;
+        *fx += (tt + tb) * len;
+        *mz -= (y_hi * tt + y_lo * tb) * len;
     }
-    // Shear on the right and left ends (v parallel).
+    // Right and left ends (v parallel).
     for j in grid.j0..=grid.j1 {
         let jj = j as isize;
         let len = overlap(m.y.centre(jj - 1), m.y.centre(jj), y_lo, y_hi);
@@ -169,15 +195,8 @@ pub fn loads(
         let il = grid.i0 as isize - 1;
         let tr = mu * (v.get(ir, jj) - frame.gy(m.x.centre(ir))) / (m.x.centre(ir) - x_hi);
         let tl = mu * (v.get(il, jj) - frame.gy(m.x.centre(il))) / (x_lo - m.x.centre(il));
-        fy += (tr + tl) * len;
-        mz += (x_hi * tr + x_lo * tl) * len;
-    }
-    Loads {
-        fx,
-        fy,
-        moment: mz,
-        fx_pressure: fxp,
-        fy_pressure: fyp,
+        *fy += (tr + tl) * len;
+        *mz += (x_hi * tr + x_lo * tl) * len;
     }
 }
 
@@ -185,10 +204,10 @@ pub fn loads(
 /// of the plate's velocity in body axes and ê_L = ê_V turned 90° counter-clockwise,
 /// D = −F·ê_V, L = F·ê_L, C = 2·(force)/(U_ref² c). When the plate is not translating, ê_V falls
 /// back to the body x axis.
-pub fn coefficients(l: &Loads, frame: &Frame) -> (f64, f64, f64) {
-    let speed = frame.a.hypot(frame.b);
+pub fn coefficients(l: &BodyAxesLoads, frame: &Frame) -> (f64, f64, f64) {
+    let speed = frame.speed();
     let (ex, ey) = if speed > 1e-12 {
-        (frame.a / speed, frame.b / speed)
+        (frame.u0 / speed, frame.v0 / speed)
     } else {
         (1.0, 0.0)
     };

@@ -60,82 +60,19 @@ impl Pressure {
                 count += 1;
             }
         }
-        let n = count as usize;
-        let mut trip: Vec<Triplet<u32, u32, f64>> = Vec::with_capacity(3 * n);
-        let mut diag = vec![0.0; n];
-        // Couple each pair of fluid cells across their shared face with A_f / d.
-        let mut couple = |a: usize, b: usize, c: f64, trip: &mut Vec<Triplet<u32, u32, f64>>| {
-            let (ua, ub) = (unknown[a], unknown[b]);
-            if ua != NONE {
-                diag[ua as usize] += c;
-            }
-            if ub != NONE {
-                diag[ub as usize] += c;
-            }
-            if ua != NONE && ub != NONE {
-                let (r, col) = if ua > ub { (ua, ub) } else { (ub, ua) };
-                trip.push(Triplet::new(r, col, -c));
-            }
-        };
-        for j in 0..ny {
-            for i in 0..nx {
-                let k = i + nx * j;
-                if !fluid[k] {
-                    continue;
-                }
-                if i + 1 < nx && fluid[k + 1] {
-                    let c = grid.dy[j] / m.x.centre_gap(i as isize + 1);
-                    couple(k, k + 1, c, &mut trip);
-                }
-                if j + 1 < ny && fluid[k + nx] {
-                    let c = grid.dx[i] / m.y.centre_gap(j as isize + 1);
-                    couple(k, k + nx, c, &mut trip);
-                }
-            }
-        }
-        for (r, d) in diag.iter().enumerate() {
-            trip.push(Triplet::new(r as u32, r as u32, *d));
-        }
-        let a = SparseColMat::<u32, f64>::try_new_from_triplets(n, n, &trip)
-            .map_err(|e| PressureError(format!("assembling the pressure matrix: {e:?}")))?;
-        // Simplicial AMD: measured fastest for the single right-hand side solved every step
-        // (`platefall bench`: at N = 128 the projection costs 65 ns/cell with it, 122–140 ns/cell
-        // supernodal with AMD or with a geometric nested dissection).
-        let params = CholeskySymbolicParams {
-            supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
-            ..Default::default()
-        };
-        let symbolic =
-            factorize_symbolic_cholesky(a.symbolic(), Side::Lower, SymmetricOrdering::Amd, params)
-                .map_err(|e| PressureError(format!("symbolic Cholesky: {e:?}")))?;
-        let mut values = vec![0.0; symbolic.len_val()];
-        let req = symbolic
-            .factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default())
-            .or(symbolic.solve_in_place_scratch::<f64>(1, Par::Seq));
-        let mut stack = MemBuffer::new(req);
-        symbolic
-            .factorize_numeric_llt(
-                &mut values,
-                a.as_ref(),
-                Side::Lower,
-                LltRegularization::default(),
-                Par::Seq,
-                MemStack::new(&mut stack),
-                Default::default(),
-            )
-            .map_err(|e| PressureError(format!("numeric Cholesky: {e:?}")))?;
-        let factor_nnz = values.len();
+        let a = assemble(grid, m, &fluid, &unknown, count as usize)?;
+        let (symbolic, values, stack) = factor(&a)?;
         Ok(Pressure {
             nx,
             ny,
             unknown,
             fluid,
+            factor_nnz: values.len(),
             symbolic,
             values,
             stack,
-            rhs: vec![0.0; n],
+            rhs: vec![0.0; count as usize],
             phi: vec![0.0; nx * ny],
-            factor_nnz,
         })
     }
 
@@ -163,13 +100,18 @@ impl Pressure {
         dt: f64,
         p: &mut [f64],
     ) {
+        self.solve_phi(u, v, grid);
+        self.correct_velocity(u, v, m);
+        self.pressure_from_phi(dt, p);
+    }
+
+    /// Solves (−L) φ = −div u* and scatters φ onto the cells (0 on plate and pinned cells).
+    fn solve_phi(&mut self, u: &Padded, v: &Padded, grid: &Grid) {
         let (nx, ny) = (self.nx, self.ny);
         for j in 0..ny {
             for i in 0..nx {
-                let k = i + nx * j;
-                let r = self.unknown[k];
+                let r = self.unknown[i + nx * j];
                 if r != NONE {
-                    // (−L) φ = −div u*
                     self.rhs[r as usize] = -Self::cell_flux(u, v, grid, i, j);
                 }
             }
@@ -182,8 +124,12 @@ impl Pressure {
             let r = self.unknown[k];
             *phi = if r != NONE { self.rhs[r as usize] } else { 0.0 };
         }
-        let phi = &self.phi;
-        let fluid = &self.fluid;
+    }
+
+    /// u = u* − ∇φ on every face between two fluid cells.
+    fn correct_velocity(&self, u: &mut Padded, v: &mut Padded, m: &Metrics) {
+        let (nx, ny) = (self.nx, self.ny);
+        let (phi, fluid) = (&self.phi, &self.fluid);
         for j in 0..ny {
             let jj = j as isize;
             for i in 1..nx {
@@ -205,7 +151,13 @@ impl Pressure {
                 }
             }
         }
-        // p = φ/Δt, shifted so that its mean over the outermost ring of cells is zero (p → 0 far away).
+    }
+
+    /// p = φ/Δt, shifted so that its mean over the outermost ring of cells is zero (p → 0 far
+    /// away); zero inside the plate.
+    fn pressure_from_phi(&self, dt: f64, p: &mut [f64]) {
+        let (nx, ny) = (self.nx, self.ny);
+        let (phi, fluid) = (&self.phi, &self.fluid);
         let inv_dt = 1.0 / dt;
         let mut ring = 0.0;
         let mut count = 0usize;
@@ -226,4 +178,84 @@ impl Pressure {
             };
         }
     }
+}
+
+/// The lower triangle of −∇² over the fluid cells: each pair of fluid cells sharing a face is
+/// coupled with A_f / d; faces to the plate or outside carry no flux (Neumann).
+fn assemble(
+    grid: &Grid,
+    m: &Metrics,
+    fluid: &[bool],
+    unknown: &[u32],
+    n: usize,
+) -> Result<SparseColMat<u32, f64>, PressureError> {
+    let (nx, ny) = (grid.nx, grid.ny);
+    let mut trip: Vec<Triplet<u32, u32, f64>> = Vec::with_capacity(3 * n);
+    let mut diag = vec![0.0; n];
+    let mut couple = |a: usize, b: usize, c: f64| {
+        let (ua, ub) = (unknown[a], unknown[b]);
+        if ua != NONE {
+            diag[ua as usize] += c;
+        }
+        if ub != NONE {
+            diag[ub as usize] += c;
+        }
+        if ua != NONE && ub != NONE {
+            let (r, col) = if ua > ub { (ua, ub) } else { (ub, ua) };
+            trip.push(Triplet::new(r, col, -c));
+        }
+    };
+    for j in 0..ny {
+        for i in 0..nx {
+            let k = i + nx * j;
+            if !fluid[k] {
+                continue;
+            }
+            if i + 1 < nx && fluid[k + 1] {
+                couple(k, k + 1, grid.dy[j] / m.x.centre_gap(i as isize + 1));
+            }
+            if j + 1 < ny && fluid[k + nx] {
+                couple(k, k + nx, grid.dx[i] / m.y.centre_gap(j as isize + 1));
+            }
+        }
+    }
+    for (r, d) in diag.iter().enumerate() {
+        trip.push(Triplet::new(r as u32, r as u32, *d));
+    }
+    SparseColMat::<u32, f64>::try_new_from_triplets(n, n, &trip)
+        .map_err(|e| PressureError(format!("assembling the pressure matrix: {e:?}")))
+}
+
+/// Symbolic and numeric Cholesky factorisation, and a workspace big enough for both and the solve.
+///
+/// Simplicial AMD: measured fastest for the single right-hand side solved every step
+/// (`platefall bench`: at N = 128 the projection costs 65 ns/cell with it, 122–140 ns/cell
+/// supernodal with AMD or with a geometric nested dissection).
+fn factor(
+    a: &SparseColMat<u32, f64>,
+) -> Result<(SymbolicCholesky<u32>, Vec<f64>, MemBuffer), PressureError> {
+    let params = CholeskySymbolicParams {
+        supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
+        ..Default::default()
+    };
+    let symbolic =
+        factorize_symbolic_cholesky(a.symbolic(), Side::Lower, SymmetricOrdering::Amd, params)
+            .map_err(|e| PressureError(format!("symbolic Cholesky: {e:?}")))?;
+    let mut values = vec![0.0; symbolic.len_val()];
+    let req = symbolic
+        .factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default())
+        .or(symbolic.solve_in_place_scratch::<f64>(1, Par::Seq));
+    let mut stack = MemBuffer::new(req);
+    symbolic
+        .factorize_numeric_llt(
+            &mut values,
+            a.as_ref(),
+            Side::Lower,
+            LltRegularization::default(),
+            Par::Seq,
+            MemStack::new(&mut stack),
+            Default::default(),
+        )
+        .map_err(|e| PressureError(format!("numeric Cholesky: {e:?}")))?;
+    Ok((symbolic, values, stack))
 }

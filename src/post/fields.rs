@@ -3,7 +3,8 @@
 //! Index conventions follow [`FieldSnapshot`]: `u` on vertical faces (xn\[i\], yc\[j\]), index
 //! `i + (nx+1) j`; `v` on horizontal faces (xc\[i\], yn\[j\]), index `i + nx j`; nodes (cell
 //! corners) (xn\[i\], yn\[j\]), index `i + (nx+1) j`.
-use crate::record::messages::{FieldSnapshot, GridGeometry};
+use crate::grid::GridGeometry;
+use crate::sim::FieldSnapshot;
 
 /// Cell-centre coordinates from node coordinates (midpoints).
 pub fn cell_centres(nodes: &[f64]) -> Vec<f64> {
@@ -11,7 +12,7 @@ pub fn cell_centres(nodes: &[f64]) -> Vec<f64> {
 }
 
 /// The face velocities of `snap`, with every face that touches a solid cell set to the grid
-/// velocity g = (gx0 − θ̇ y, gy0 + θ̇ x) (no-slip: the plate moves rigidly).
+/// velocity g = (u0 − θ̇ y, v0 + θ̇ x) (no-slip: the plate moves rigidly).
 ///
 /// The solver may leave anything on faces inside the plate; overriding them with the rigid-body
 /// motion makes the field inside the plate the (divergence-free) rigid motion, so vorticity at the
@@ -31,7 +32,7 @@ pub fn face_velocities(grid: &GridGeometry, snap: &FieldSnapshot) -> (Vec<f64>, 
         for i in 0..=nx {
             let touches = (i > 0 && solid(i - 1, j)) || (i < nx && solid(i, j));
             if touches {
-                u[i + (nx + 1) * j] = snap.gx0 - snap.omega * yc[j];
+                u[i + (nx + 1) * j] = snap.frame.u0 - snap.frame.omega * yc[j];
             }
         }
     }
@@ -39,7 +40,7 @@ pub fn face_velocities(grid: &GridGeometry, snap: &FieldSnapshot) -> (Vec<f64>, 
         for i in 0..nx {
             let touches = (j > 0 && solid(i, j - 1)) || (j < ny && solid(i, j));
             if touches {
-                v[i + nx * j] = snap.gy0 + snap.omega * xc[i];
+                v[i + nx * j] = snap.frame.v0 + snap.frame.omega * xc[i];
             }
         }
     }
@@ -107,11 +108,11 @@ pub fn stream_function_at_nodes(grid: &GridGeometry, u: &[f64], v: &[f64]) -> Ve
 /// drawn for the relative velocity u − w.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum StreamFrame {
-    /// 1: fixed to the plate (translating and rotating with it): w = g = (gx0 − θ̇y, gy0 + θ̇x).
+    /// 1: fixed to the plate (translating and rotating with it): w = g = (u0 − θ̇y, v0 + θ̇x).
     PlateFixed = 1,
     /// 2: fixed in the fluid far away (inertial): w = 0.
     Inertial = 2,
-    /// 3: translating with the plate's centre but not rotating: w = (gx0, gy0). The seed's choice
+    /// 3: translating with the plate's centre but not rotating: w = (u0, v0). The seed's choice
     /// (like a wind-tunnel photograph of a rotating plate); the default.
     #[default]
     Translating = 3,
@@ -148,8 +149,8 @@ impl StreamFrame {
 
     /// The observer's velocity at body point (x, y), in body axes.
     pub fn observer_velocity(self, snap: &FieldSnapshot, x: f64, y: f64) -> (f64, f64) {
-        let (tx, ty) = (snap.gx0, snap.gy0);
-        let (rx, ry) = (-snap.omega * y, snap.omega * x);
+        let (tx, ty) = (snap.frame.u0, snap.frame.v0);
+        let (rx, ry) = (-snap.frame.omega * y, snap.frame.omega * x);
         match self {
             Self::PlateFixed => (tx + rx, ty + ry),
             Self::Inertial => (0.0, 0.0),
@@ -162,8 +163,8 @@ impl StreamFrame {
     /// origin: translation (a, b) has ψ = a y − b x, rotation θ̇ has ψ = −θ̇ (x² + y²)/2.
     /// The relative stream function is ψ − this.
     pub fn observer_stream_function(self, snap: &FieldSnapshot, x: f64, y: f64) -> f64 {
-        let trans = snap.gx0 * y - snap.gy0 * x;
-        let rot = -0.5 * snap.omega * (x * x + y * y);
+        let trans = snap.frame.u0 * y - snap.frame.v0 * x;
+        let rot = -0.5 * snap.frame.omega * (x * x + y * y);
         match self {
             Self::PlateFixed => trans + rot,
             Self::Inertial => 0.0,

@@ -1,10 +1,13 @@
-//! Post-processing of flow snapshots (SPEC §7): vorticity, stream function, streamlines in the
-//! four observer frames, and resampling from the stretched MAC grid onto uniform images.
+//! Post-processing (SPEC §7): statistics and the summary of a run's time series, and pictures of
+//! its flow snapshots — vorticity, stream function, streamlines in the four observer frames, and
+//! resampling from the stretched MAC grid onto uniform images.
 //!
-//! Everything here is a pure function of a [`GridGeometry`](crate::record::messages::GridGeometry)
-//! and a [`FieldSnapshot`](crate::record::messages::FieldSnapshot): no I/O, no Rerun types. The
-//! logger thread (`record::scene`) calls it, so this work runs beside the solver, not in it.
+//! Everything here is a pure function of the solver's outputs ([`crate::sim::StepSample`],
+//! [`crate::sim::FieldSnapshot`], [`crate::grid::GridGeometry`]): no I/O, no Rerun types. The
+//! logger thread (`record`) calls the painting, so that work runs beside the solver, not in it.
 //!
+//! - [`analysis`]: developed windows, means, the dominant lift frequency, turn counting.
+//! - [`summary`]: the run summary with its stable JSON keys; [`report`]: the end-of-run text.
 //! - [`fields`]: the staggered-grid quantities. [`vorticity_at_nodes`] (ω = ∂v/∂x − ∂u/∂y at cell
 //!   corners), [`stream_function_at_nodes`] (ψ with u = ψ_y, v = −ψ_x, integrated from the MAC face
 //!   fluxes: exact for a discretely divergence-free field), and [`StreamFrame`], the observer frames
@@ -15,14 +18,17 @@
 //! - [`painter`]: [`FieldPainter`] puts it together: one call turns a snapshot into the three
 //!   images (vorticity, pressure, speed) and the streamlines, with all interpolation weights
 //!   precomputed once per run.
+pub mod analysis;
 pub mod contour;
 pub mod fields;
 pub mod painter;
+pub mod report;
 pub mod resample;
+pub mod summary;
 
 pub use contour::{isolines, simplify_polyline, Polyline};
 pub use fields::{
     cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, StreamFrame,
 };
 pub use painter::{FieldPainter, PaintedFields, PainterOptions};
-pub use resample::{bilinear, AxisWeights, ImageGrid, Window};
+pub use resample::{bilinear, AxisWeights, FieldWindow, ImageGrid};

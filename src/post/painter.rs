@@ -6,14 +6,15 @@ use super::contour::{isolines, simplify_polyline, Polyline};
 use super::fields::{
     cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, StreamFrame,
 };
-use super::resample::{bilinear, AxisWeights, ImageGrid, Window};
-use crate::record::messages::{FieldSnapshot, GridGeometry};
+use super::resample::{bilinear, AxisWeights, FieldWindow, ImageGrid};
+use crate::grid::GridGeometry;
+use crate::sim::FieldSnapshot;
 
 /// What to paint and how finely.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PainterOptions {
     /// The window in body coordinates (chords).
-    pub window: Window,
+    pub window: FieldWindow,
     /// Image pixels along the window's longer side.
     pub image_long_side: usize,
     /// Grid points along the longer side of the grid the stream function is contoured on.
@@ -29,7 +30,7 @@ pub struct PainterOptions {
 impl Default for PainterOptions {
     fn default() -> Self {
         Self {
-            window: Window::default(),
+            window: FieldWindow::default(),
             image_long_side: 256,
             contour_long_side: 160,
             frame: StreamFrame::default(),
@@ -270,6 +271,7 @@ impl FieldPainter {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::flow::Frame;
 
     /// A stretched grid (geometric spacing) over [-3, 5] × [-3, 3] with a plate in the middle.
     pub(crate) fn test_grid(nx: usize, ny: usize) -> GridGeometry {
@@ -318,9 +320,7 @@ mod tests {
             x: 0.0,
             y: 0.0,
             theta: 0.0,
-            gx0: 0.0,
-            gy0: 0.0,
-            omega: 0.0,
+            frame: Frame::default(),
             u,
             v,
             p: vec![0.0; nx * ny],
@@ -346,8 +346,8 @@ mod tests {
         let (a, b) = (0.8, -0.3);
         let mut snap = snapshot(&grid, |_, _| (a, b));
         // the plate moves with the flow, so the solid override changes nothing
-        snap.gx0 = a;
-        snap.gy0 = b;
+        snap.frame.u0 = a;
+        snap.frame.v0 = b;
         let (u, v) = face_velocities(&grid, &snap);
         let psi = stream_function_at_nodes(&grid, &u, &v);
         let (x0, y0) = (grid.xn[0], grid.yn[0]);
@@ -369,7 +369,7 @@ mod tests {
             .iter()
             .flat_map(|&y| grid.xn.iter().map(move |&x| f(x, y)))
             .collect();
-        let img = ImageGrid::new(Window::default(), 64);
+        let img = ImageGrid::new(FieldWindow::default(), 64);
         let (xs, ys) = (img.xs(), img.ys());
         let out = bilinear(
             &vals,
@@ -388,9 +388,9 @@ mod tests {
     fn frames_subtract_the_right_motion() {
         let grid = test_grid(8, 8);
         let mut snap = snapshot(&grid, |_, _| (0.0, 0.0));
-        snap.gx0 = 1.0;
-        snap.gy0 = -0.5;
-        snap.omega = 2.0;
+        snap.frame.u0 = 1.0;
+        snap.frame.v0 = -0.5;
+        snap.frame.omega = 2.0;
         let (x, y) = (0.3, -0.2);
         let g = (1.0 - 2.0 * y, -0.5 + 2.0 * x);
         assert_eq!(StreamFrame::PlateFixed.observer_velocity(&snap, x, y), g);
@@ -424,9 +424,9 @@ mod tests {
         let grid = test_grid(30, 24);
         let (a, b, om) = (0.6, -0.2, 0.5);
         let mut snap = snapshot(&grid, |x, y| (a - om * y, b + om * x));
-        snap.gx0 = a;
-        snap.gy0 = b;
-        snap.omega = om;
+        snap.frame.u0 = a;
+        snap.frame.v0 = b;
+        snap.frame.omega = om;
         let opts = PainterOptions {
             image_long_side: 48,
             contour_long_side: 32,
@@ -452,13 +452,13 @@ mod tests {
     fn uniform_flow_streamlines_are_straight_and_evenly_spaced() {
         let grid = test_grid(30, 24);
         let mut snap = snapshot(&grid, |_, _| (-1.0, 0.0));
-        snap.gx0 = -1.0;
+        snap.frame.u0 = -1.0;
         let opts = PainterOptions {
             image_long_side: 64,
             contour_long_side: 64,
             frame: StreamFrame::Inertial,
             psi_spacing: 0.5,
-            window: Window {
+            window: FieldWindow {
                 x0: -2.5,
                 x1: 4.0,
                 y0: -2.3,

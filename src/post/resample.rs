@@ -7,14 +7,14 @@
 
 /// A rectangle in body coordinates (chord units): x in \[x0, x1\], y in \[y0, y1\].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Window {
+pub struct FieldWindow {
     pub x0: f64,
     pub x1: f64,
     pub y0: f64,
     pub y1: f64,
 }
 
-impl Default for Window {
+impl Default for FieldWindow {
     /// \[−2.5, 4\] × \[−2.5, 2.5\] chords: the plate with 2 chords of margin ahead and 3.5 behind.
     fn default() -> Self {
         Self {
@@ -26,7 +26,7 @@ impl Default for Window {
     }
 }
 
-impl Window {
+impl FieldWindow {
     pub fn width(&self) -> f64 {
         self.x1 - self.x0
     }
@@ -43,18 +43,18 @@ impl Window {
     }
 }
 
-/// A uniform image over a [`Window`]: `width × height` square-ish pixels, row 0 at the bottom
+/// A uniform image over a [`FieldWindow`]: `width × height` square-ish pixels, row 0 at the bottom
 /// (y = y0), x fastest. Pixel (i, j) covers \[x0 + i dx, x0 + (i+1) dx\] × \[y0 + j dy, y0 + (j+1) dy\].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImageGrid {
-    pub window: Window,
+    pub window: FieldWindow,
     pub width: usize,
     pub height: usize,
 }
 
 impl ImageGrid {
     /// An image with `long_side` pixels along the window's longer side and (nearly) square pixels.
-    pub fn new(window: Window, long_side: usize) -> Self {
+    pub fn new(window: FieldWindow, long_side: usize) -> Self {
         let long_side = long_side.max(1);
         let (w, h) = (window.width(), window.height());
         let (width, height) = if w >= h {

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
 
-use super::messages::StepSample;
+use crate::sim::StepSample;
 
 /// The header line (column names; angles in radians, everything non-dimensional).
 pub const CSV_HEADER: &str = "time,step,dt,C_L,C_D,C_M,X,Y,theta,Xdot,Ydot,thetadot,V,gamma,alpha";

@@ -7,17 +7,13 @@ use std::time::Duration;
 
 use anyhow::Context as _;
 use crossbeam_channel::{bounded, Receiver, RecvTimeoutError, Sender, TrySendError};
-use rerun::RecordingStream;
 
 use super::csv::CsvWriter;
-use super::messages::{FieldSnapshot, Message, RunInfo, RunOutcome, RunStatus, StepSample};
+use super::messages::{Message, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::progress::Progress;
-use super::scene::Scene;
-use super::sinks::{open_sinks, ConnectStats};
-
-/// Rerun application id of every recording.
-pub const APPLICATION_ID: &str = "platefall";
+use super::viewer::{ConnectReport, LiveServer, Viewer};
+use crate::sim::{FieldSnapshot, RunStatus, StepSample};
 
 /// State shared by the solver-side handle and the logger thread.
 #[derive(Debug, Default)]
@@ -41,18 +37,6 @@ pub struct Logger {
     max_fields_in_flight: usize,
 }
 
-/// What a --connect / --spawn stream did.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ConnectReport {
-    pub url: String,
-    /// Messages handed to the gRPC client.
-    pub sent: u64,
-    /// Messages dropped because the viewer did not keep up (or was not there).
-    pub dropped: u64,
-    /// True if a viewer was connected at some point.
-    pub ever_connected: bool,
-}
-
 /// The result of a finished logger: counts, outputs, and (with --serve) the live server.
 pub struct LoggerReport {
     /// Steps received (all of them are in the recording and the CSV).
@@ -72,7 +56,7 @@ pub struct LoggerReport {
     /// the sinks were opened were also printed then).
     pub notes: Vec<String>,
     /// Keeps the --serve server alive after the run; dropped by `serve_until_interrupted`.
-    server: Option<RecordingStream>,
+    server: Option<LiveServer>,
 }
 
 impl std::fmt::Debug for LoggerReport {
@@ -100,18 +84,18 @@ impl LoggerReport {
     /// Human-readable lines for the end-of-run report.
     pub fn lines(&self) -> Vec<String> {
         let mut out = Vec::new();
+        let skipped = if self.fields_skipped > 0 {
+            format!(", {} skipped", self.fields_skipped)
+        } else {
+            String::new()
+        };
         if let Some((path, bytes)) = &self.rrd {
             out.push(format!(
-                "recording: {} ({:.1} MB, {} steps, {} field snapshots{})",
+                "recording: {} ({:.1} MB, {} steps, {} field snapshots{skipped})",
                 path.display(),
                 *bytes as f64 / 1e6,
                 self.steps,
                 self.fields_logged,
-                if self.fields_skipped > 0 {
-                    format!(", {} skipped", self.fields_skipped)
-                } else {
-                    String::new()
-                }
             ));
         } else if self.fields_skipped > 0 {
             out.push(format!("field snapshots skipped: {}", self.fields_skipped));
@@ -140,23 +124,23 @@ impl LoggerReport {
             return Ok(());
         };
         if !stop.load(Ordering::SeqCst) {
+            let url = self.serve_url.as_deref().unwrap_or("?");
             eprintln!(
-                "platefall: run finished; still serving it at {} (open it with `rerun {}`). Press Ctrl-C to stop.",
-                self.serve_url.as_deref().unwrap_or("?"),
-                self.serve_url.as_deref().unwrap_or("?"),
+                "platefall: run finished; still serving it at {url} (open it with `rerun {url}`). Press Ctrl-C to stop."
             );
             while !stop.load(Ordering::SeqCst) {
                 std::thread::sleep(Duration::from_millis(100));
             }
         }
-        let _ = server.flush_with_timeout(Duration::from_secs(2));
-        drop(server);
+        server.shut_down();
         Ok(())
     }
 
     /// Shuts a --serve server down now (same as `serve_until_interrupted` with `stop` set).
     pub fn stop_serving(&mut self) {
-        self.server.take();
+        if let Some(s) = self.server.take() {
+            s.shut_down();
+        }
     }
 }
 
@@ -165,7 +149,7 @@ impl LoggerReport {
 pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger> {
     if !(opts.field_every.is_finite() && opts.field_every > 0.0) {
         anyhow::bail!(
-            "--field-every {}: must be a finite number > 0",
+            "field snapshot interval {}: must be a finite number > 0",
             opts.field_every
         );
     }
@@ -173,58 +157,30 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         Some(path) => Some(CsvWriter::create(path)?),
         None => None,
     };
-    let mut notes = Vec::new();
-    let mut connect = None;
-    let mut serve_url = None;
-    let rec = if opts.has_rerun_sink() {
-        let set = open_sinks(&opts)?;
-        for n in &set.notes {
-            eprintln!("platefall: warning: {n}");
-        }
-        notes.extend(set.notes);
-        connect = set.connect;
-        serve_url = set.serve_url;
-        if let Some(url) = &serve_url {
-            eprintln!("platefall: serving the run at {url} (open it with `rerun {url}`)");
-        }
-        let rec = rerun::RecordingStreamBuilder::new(APPLICATION_ID)
-            .recording_name(info.title.clone())
-            .enabled(true)
-            .set_sinks(set.sinks)
-            .context("cannot start the Rerun recording")?;
-        rec.set_log_tick_enabled(false);
-        rec.set_log_time_enabled(false);
-        super::blueprint::default_blueprint()
-            .send(&rec, rerun::blueprint::BlueprintActivation::default())
-            .context("cannot send the viewer layout")?;
-        Some(rec)
+    let viewer = if opts.has_rerun_sink() {
+        Some(Viewer::open(&opts, &info)?)
     } else {
         None
     };
-
     let (tx, rx) = bounded(opts.channel_capacity.max(2));
     let shared = Arc::new(Shared::default());
-    let field_every = opts.field_every;
-    let max_fields_in_flight = opts.max_fields_in_flight;
-    let thread = {
-        let shared = shared.clone();
-        std::thread::Builder::new()
-            .name("platefall-logger".into())
-            .spawn(move || {
-                run_logger(LoggerThread {
-                    rx,
-                    shared,
-                    opts,
-                    info,
-                    rec,
-                    csv,
-                    connect,
-                    serve_url,
-                    notes,
-                })
-            })
-            .context("cannot start the logger thread")?
+    let (field_every, max_fields_in_flight) = (opts.field_every, opts.max_fields_in_flight);
+    let thread = LoggerThread {
+        rx,
+        shared: shared.clone(),
+        progress: Progress::new(opts.progress, opts.t_end),
+        serve_url: opts.serve.as_ref().map(|s| s.url()),
+        opts,
+        csv,
+        viewer,
+        steps: 0,
+        fields: 0,
+        errors: Vec::new(),
     };
+    let thread = std::thread::Builder::new()
+        .name("platefall-logger".into())
+        .spawn(move || thread.run())
+        .context("cannot start the logger thread")?;
     Ok(Logger {
         tx: Some(tx),
         thread: Some(thread),
@@ -329,202 +285,150 @@ impl Drop for Logger {
     }
 }
 
+/// The logger thread's state: its outputs and what it has counted.
 struct LoggerThread {
     rx: Receiver<Message>,
     shared: Arc<Shared>,
     opts: RecordOptions,
-    info: RunInfo,
-    rec: Option<RecordingStream>,
+    progress: Progress,
     csv: Option<CsvWriter>,
-    connect: Option<(String, Arc<ConnectStats>)>,
+    viewer: Option<Viewer>,
     serve_url: Option<String>,
-    notes: Vec<String>,
+    steps: u64,
+    fields: u64,
+    /// What went wrong with an output (the run goes on; the report says so).
+    errors: Vec<String>,
 }
 
-fn run_logger(t: LoggerThread) -> anyhow::Result<LoggerReport> {
-    let LoggerThread {
-        rx,
-        shared,
-        opts,
-        info,
-        rec,
-        mut csv,
-        connect,
-        serve_url,
-        mut notes,
-    } = t;
-    let mut errors: Vec<String> = Vec::new();
-    let mut progress = Progress::new(opts.progress, opts.t_end);
-    let mut scene = match &rec {
-        Some(rec) => match Scene::start(rec.clone(), &info, &opts) {
-            Ok(s) => Some(s),
-            Err(e) => {
-                errors.push(format!("recording: {e}"));
+impl LoggerThread {
+    fn run(mut self) -> anyhow::Result<LoggerReport> {
+        let outcome = self.receive();
+        self.finish(outcome)
+    }
+
+    /// Handles messages until the outcome arrives (or the solver goes away without one).
+    fn receive(&mut self) -> RunOutcome {
+        loop {
+            match self.rx.recv_timeout(Duration::from_millis(200)) {
+                Ok(msg) => {
+                    let shared = self.shared.clone();
+                    let _gate = shared.gate.lock().unwrap_or_else(|e| e.into_inner());
+                    if let Some(outcome) = self.handle(msg) {
+                        return outcome;
+                    }
+                }
+                Err(RecvTimeoutError::Timeout) => self.idle(),
+                Err(RecvTimeoutError::Disconnected) => return lost_solver_outcome(),
+            }
+        }
+    }
+
+    fn handle(&mut self, msg: Message) -> Option<RunOutcome> {
+        match msg {
+            Message::Step(s) => self.step(s),
+            Message::Field(f) => self.field(&f),
+            Message::Finish(o) => return Some(o),
+        }
+        None
+    }
+
+    fn idle(&mut self) {
+        self.progress.tick();
+        let result = self.viewer.as_mut().map(Viewer::idle);
+        self.note(result);
+    }
+
+    fn step(&mut self, s: StepSample) {
+        self.steps += 1;
+        self.progress.update(&s);
+        if let Some(w) = &mut self.csv {
+            if let Err(e) = w.write(&s) {
+                self.errors.push(format!("{e:#}"));
+                self.csv = None;
+            }
+        }
+        let result = self.viewer.as_mut().map(|v| v.step(s));
+        self.note(result);
+    }
+
+    fn field(&mut self, f: &FieldSnapshot) {
+        self.shared.fields_in_flight.fetch_sub(1, Ordering::AcqRel);
+        let skipped = self.shared.fields_skipped.load(Ordering::Relaxed);
+        match self.viewer.as_mut().map(|v| v.field(f, skipped)) {
+            Some(Ok(false)) => {}
+            Some(Err(e)) => self.errors.push(e),
+            Some(Ok(true)) | None => self.fields += 1,
+        }
+    }
+
+    /// Keeps a recording error for the report.
+    fn note(&mut self, result: Option<Result<(), String>>) {
+        if let Some(Err(e)) = result {
+            self.errors.push(e);
+        }
+    }
+
+    /// Finalises every output, whatever happened before.
+    fn finish(mut self, outcome: RunOutcome) -> anyhow::Result<LoggerReport> {
+        let skipped = self.shared.fields_skipped.load(Ordering::Relaxed);
+        self.progress.finish(outcome.status.name());
+        let stats = self.stats_markdown(skipped);
+        let viewer = self
+            .viewer
+            .take()
+            .map(|v| v.finish(&outcome, &stats, &mut self.errors));
+        let csv = match self.csv.take().map(CsvWriter::finish) {
+            Some(Ok(r)) => Some(r),
+            Some(Err(e)) => {
+                self.errors.push(format!("{e:#}"));
                 None
             }
-        },
-        None => None,
-    };
-    let mut steps = 0u64;
-    let mut fields = 0u64;
-
-    let outcome = loop {
-        let msg = match rx.recv_timeout(Duration::from_millis(200)) {
-            Ok(m) => m,
-            Err(RecvTimeoutError::Timeout) => {
-                progress.tick();
-                if let Some(s) = &mut scene {
-                    if let Err(e) = s.flush_if_stale() {
-                        errors.push(format!("recording: {e}"));
-                        scene = None;
-                    }
-                }
-                continue;
-            }
-            Err(RecvTimeoutError::Disconnected) => {
-                break RunOutcome {
-                    status: RunStatus::Interrupted,
-                    summary_json: "{}".into(),
-                    report:
-                        "The solver stopped without reporting an outcome (an error or a panic); \
-                             the recording ends at the last step received."
-                            .into(),
-                };
-            }
+            None => None,
         };
-        let _gate = shared.gate.lock().unwrap_or_else(|e| e.into_inner());
-        match msg {
-            Message::Start(_) => {} // spawn_logger already has the RunInfo
-            Message::Step(s) => {
-                steps += 1;
-                progress.update(&s);
-                if let Some(w) = &mut csv {
-                    if let Err(e) = w.write(&s) {
-                        errors.push(format!("{e:#}"));
-                        csv = None;
-                    }
-                }
-                if let Some(sc) = &mut scene {
-                    if let Err(e) = sc.step(s) {
-                        errors.push(format!("recording: {e}"));
-                        scene = None;
-                    }
-                }
-            }
-            Message::Field(f) => {
-                shared.fields_in_flight.fetch_sub(1, Ordering::AcqRel);
-                if let Some(sc) = &mut scene {
-                    let skipped = shared.fields_skipped.load(Ordering::Relaxed);
-                    match sc.field(&f, skipped) {
-                        Ok(true) => fields += 1,
-                        Ok(false) => {}
-                        Err(e) => {
-                            errors.push(format!("recording: {e}"));
-                            scene = None;
-                        }
-                    }
-                } else {
-                    fields += 1;
-                }
-            }
-            Message::Finish(o) => break o,
+        if !self.errors.is_empty() {
+            anyhow::bail!("{}", self.errors.join("; "));
         }
-    };
+        let (rrd, connect, server, notes) = match viewer {
+            Some(v) => (v.rrd, v.connect, v.server, v.notes),
+            None => (None, None, None, Vec::new()),
+        };
+        Ok(LoggerReport {
+            steps: self.steps,
+            fields_logged: self.fields,
+            fields_skipped: skipped,
+            rrd,
+            csv,
+            serve_url: self.serve_url,
+            connect,
+            notes,
+            server,
+        })
+    }
 
-    // --- Finalise every sink, whatever happened above. ---
-    let skipped = shared.fields_skipped.load(Ordering::Relaxed);
-    let status_word = match &outcome.status {
-        RunStatus::Completed => "completed",
-        RunStatus::Diverged(_) => "diverged",
-        RunStatus::Interrupted => "interrupted",
-    };
-    progress.finish(status_word);
-
-    let connect_report = connect.as_ref().map(|(url, st)| ConnectReport {
-        url: url.clone(),
-        sent: st.sent.load(Ordering::Relaxed),
-        dropped: st.dropped.load(Ordering::Relaxed),
-        ever_connected: st.ever_connected.load(Ordering::Relaxed),
-    });
-    if let Some(sc) = &mut scene {
+    /// The recording's own account of what it holds, for `/run/summary`.
+    fn stats_markdown(&self, skipped: u64) -> String {
         let mut stats = format!(
-            "- steps recorded: {steps}\n- field snapshots recorded: {fields} (every {} c/U)\n\
+            "- steps recorded: {}\n- field snapshots recorded: {} (every {} c/U)\n\
              - field snapshots skipped because the logger fell behind: {skipped}\n",
-            opts.field_every
+            self.steps, self.fields, self.opts.field_every
         );
-        if let Some(c) = &connect_report {
+        if let Some(c) = self.viewer.as_ref().and_then(Viewer::connect_report) {
             stats.push_str(&format!(
                 "- live stream to {}: {} messages dropped\n",
                 c.url, c.dropped
             ));
         }
-        if let Err(e) = sc.finish(&outcome, &stats) {
-            errors.push(format!("recording: {e}"));
-        }
+        stats
     }
-    drop(scene);
+}
 
-    let csv_out = match csv.take() {
-        Some(w) => match w.finish() {
-            Ok(r) => Some(r),
-            Err(e) => {
-                errors.push(format!("{e:#}"));
-                None
-            }
-        },
-        None => None,
-    };
-
-    let mut server = None;
-    let mut rrd = None;
-    if let Some(rec) = rec {
-        // Everything down the sinks, then the file's footer (drops only the file sink).
-        let _ = rec.flush_with_timeout(Duration::from_secs(30));
-        rec.finalize_deferred_sinks();
-        if let Some(path) = &opts.save {
-            match std::fs::metadata(path) {
-                Ok(m) if m.len() > 0 => rrd = Some((path.clone(), m.len())),
-                Ok(_) => errors.push(format!("--save {}: the file is empty", path.display())),
-                Err(e) => errors.push(format!("--save {}: {e}", path.display())),
-            }
-        }
-        if serve_url.is_some() && errors.is_empty() {
-            server = Some(rec);
-        } else {
-            drop(rec);
-        }
+/// The outcome when the solver's handle went away without reporting one.
+fn lost_solver_outcome() -> RunOutcome {
+    RunOutcome {
+        status: RunStatus::Interrupted,
+        summary_json: "{}".into(),
+        report: "The solver stopped without reporting an outcome (an error or a panic); \
+                 the recording ends at the last step received."
+            .into(),
     }
-    if let Some(c) = &connect_report {
-        let file_note = if rrd.is_some() {
-            " (the .rrd file is complete)"
-        } else {
-            ""
-        };
-        if !c.ever_connected {
-            notes.push(format!(
-                "--connect {}: no viewer was reachable; nothing was streamed there{file_note}",
-                c.url
-            ));
-        } else if c.dropped > 0 {
-            notes.push(format!(
-                "--connect {}: the viewer did not keep up; {} messages were dropped for it{file_note}",
-                c.url, c.dropped
-            ));
-        }
-    }
-
-    if !errors.is_empty() {
-        anyhow::bail!("{}", errors.join("; "));
-    }
-    Ok(LoggerReport {
-        steps,
-        fields_logged: fields,
-        fields_skipped: skipped,
-        rrd,
-        csv: csv_out,
-        serve_url,
-        connect: connect_report,
-        notes,
-        server,
-    })
 }

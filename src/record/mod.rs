@@ -1,9 +1,10 @@
-//! Recording: plain-data messages, the logger thread, Rerun sinks, blueprint, CSV, progress.
+//! Recording: the logger thread beside the solver, CSV, progress, and (cargo feature `viewer`,
+//! on by default) the Rerun sinks, scene and blueprint in [`viewer`].
 //!
 //! # Contract with the solver
 //!
 //! ```ignore
-//! let opts = args.record.resolve(case, t_end)?;            // validates, before anything runs
+//! let opts = cli_args.record.resolve(case, t_end)?;        // validated, before anything runs
 //! let mut logger = record::spawn_logger(opts, run_info)?;  // opens sinks, starts the thread
 //! loop {
 //!     /* advance one step */
@@ -103,19 +104,23 @@
 //! - For a bug report (< 20 MB): `--field-every 0.5 --field-res 128` gives 17.7 MB for the default
 //!   free fall (57 snapshots; the 62.6k steps are 16 MB of it). Longer runs: also shorten
 //!   `--t-end` / `--turns`, since the per-step series dominate.
-mod blueprint;
 pub mod csv;
+pub mod files;
 pub mod logger;
 pub mod messages;
 pub mod options;
 mod progress;
-mod scene;
-mod sinks;
+#[cfg(feature = "viewer")]
+pub mod viewer;
+#[cfg(not(feature = "viewer"))]
+#[path = "viewer_off.rs"]
+pub mod viewer;
 
 pub use csv::CSV_HEADER;
-pub use logger::{spawn_logger, ConnectReport, Logger, LoggerReport, APPLICATION_ID};
+pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use options::{
-    OptionsError, ProgressMode, RecordArgs, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY,
-    DEFAULT_FIELD_RES,
+    ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
 };
-pub use scene::paths;
+pub use viewer::ConnectReport;
+#[cfg(feature = "viewer")]
+pub use viewer::{paths, APPLICATION_ID};

@@ -1,21 +1,21 @@
-//! Command-line options for recording ([`RecordArgs`], flattened into every case subcommand) and
-//! their validated form ([`RecordOptions`]) that the logger uses.
-use std::net::{IpAddr, SocketAddr, TcpListener};
-use std::path::{Path, PathBuf};
+//! Validated recording options: everything the logger needs. The command line builds them
+//! (`cli::record_args`); Rust callers build them directly.
+use std::net::{IpAddr, SocketAddr};
+use std::path::PathBuf;
 
-use crate::post::{StreamFrame, Window};
+use crate::post::{FieldWindow, StreamFrame};
 
 /// Default convective time between field snapshots (see the size budget in `record/mod.rs`).
 pub const DEFAULT_FIELD_EVERY: f64 = 0.1;
 /// Default image size: pixels along the longer side of the field window.
 pub const DEFAULT_FIELD_RES: usize = 256;
-/// Accepted range of `--field-res`.
+/// Accepted range of the field image size.
 pub const FIELD_RES_RANGE: std::ops::RangeInclusive<usize> = 16..=2048;
 /// Default gRPC port (Rerun's own default).
 pub const DEFAULT_PORT: u16 = 9876;
 
 /// How progress is shown on stderr.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ProgressMode {
     /// A bar on a terminal, plain lines every ~10 s otherwise.
     #[default]
@@ -26,79 +26,6 @@ pub enum ProgressMode {
     Lines,
     /// Nothing.
     Off,
-}
-
-/// Recording and output options shared by every case (`#[command(flatten)]` them).
-#[derive(Clone, Debug, clap::Args)]
-#[command(next_help_heading = "Recording and output")]
-pub struct RecordArgs {
-    /// Write the Rerun recording to FILE.rrd [default: recordings/<case>.rrd]
-    #[arg(long, value_name = "FILE.rrd")]
-    pub save: Option<PathBuf>,
-
-    /// Do not write a .rrd file (stream only, or CSV only)
-    #[arg(long, conflicts_with = "save")]
-    pub no_save: bool,
-
-    /// Host a gRPC server that viewers connect to (`rerun rerun+http://HOST:PORT/proxy`); it keeps
-    /// serving after the run ends, until Ctrl-C, so a late viewer still sees the whole run
-    #[arg(long)]
-    pub serve: bool,
-
-    /// Address the --serve server binds to (0.0.0.0 to accept remote viewers)
-    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]
-    pub bind: IpAddr,
-
-    /// Port of the --serve server
-    #[arg(long, value_name = "N", default_value_t = DEFAULT_PORT)]
-    pub port: u16,
-
-    /// History the --serve server keeps for late viewers, e.g. "25%" (of RAM) or "2GB"
-    #[arg(long, value_name = "LIMIT", default_value = "25%")]
-    pub server_memory_limit: String,
-
-    /// Also stream to an already-running viewer, e.g. rerun+http://127.0.0.1:9876/proxy
-    #[arg(long, value_name = "URL", conflicts_with = "spawn")]
-    pub connect: Option<String>,
-
-    /// Start a local Rerun viewer (needs `rerun` on PATH) and stream to it
-    #[arg(long)]
-    pub spawn: bool,
-
-    /// Convective time (c/U) between field snapshots (images and streamlines)
-    #[arg(long, value_name = "T", default_value_t = DEFAULT_FIELD_EVERY)]
-    pub field_every: f64,
-
-    /// Pixels along the longer side of the field images (16..=2048)
-    #[arg(long, value_name = "PX", default_value_t = DEFAULT_FIELD_RES)]
-    pub field_res: usize,
-
-    /// Field image window in body coordinates (chords): XMIN,XMAX,YMIN,YMAX
-    #[arg(
-        long,
-        value_name = "XMIN,XMAX,YMIN,YMAX",
-        default_value = "-2.5,4,-2.5,2.5",
-        allow_hyphen_values = true
-    )]
-    pub field_window: String,
-
-    /// Observer frame of the streamlines and the speed image: 1 fixed to the plate, 2 fixed in the
-    /// fluid, 3 translating with the plate but not rotating (the seed's), 4 rotating with the
-    /// plate but not translating
-    #[arg(long, value_name = "1..4", default_value_t = 3)]
-    pub streamlines_frame: u8,
-
-    /// Also write every step to a CSV file (time, step, dt, C_L, C_D, C_M, X, Y, θ, Ẋ, Ẏ, θ̇, V, γ, α)
-    #[arg(long, value_name = "FILE")]
-    pub csv: Option<PathBuf>,
-
-    /// No progress output
-    #[arg(long, short = 'q')]
-    pub quiet: bool,
-
-    /// Progress display on stderr
-    #[arg(long, value_enum, value_name = "MODE", default_value_t = ProgressMode::Auto)]
-    pub progress: ProgressMode,
 }
 
 /// `--serve` settings.
@@ -124,7 +51,7 @@ impl ServeOptions {
 
 /// Validated recording options; everything the logger needs.
 ///
-/// Build it with [`RecordArgs::resolve`], or directly (tests, benches): [`RecordOptions::default`]
+/// Built by the command line, or directly (tests, benches): [`RecordOptions::default`]
 /// records nothing; [`RecordOptions::to_file`] writes one .rrd and shows no progress.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RecordOptions {
@@ -141,7 +68,7 @@ pub struct RecordOptions {
     /// Image pixels along the longer side of `field_window`.
     pub field_res: usize,
     /// Field image window in body coordinates.
-    pub field_window: Window,
+    pub field_window: FieldWindow,
     /// Observer frame of streamlines and the speed image.
     pub streamlines_frame: StreamFrame,
     /// Per-step CSV output.
@@ -166,7 +93,7 @@ impl Default for RecordOptions {
             spawn: false,
             field_every: DEFAULT_FIELD_EVERY,
             field_res: DEFAULT_FIELD_RES,
-            field_window: Window::default(),
+            field_window: FieldWindow::default(),
             streamlines_frame: StreamFrame::default(),
             csv: None,
             progress: ProgressMode::Off,
@@ -190,341 +117,5 @@ impl RecordOptions {
     /// True if anything at all is recorded or streamed.
     pub fn has_rerun_sink(&self) -> bool {
         self.save.is_some() || self.serve.is_some() || self.connect.is_some() || self.spawn
-    }
-}
-
-/// A bad recording option: one line naming the value and what is accepted.
-#[derive(Debug, thiserror::Error, PartialEq)]
-pub enum OptionsError {
-    #[error("--field-every {0}: must be a finite number > 0 (convective time units between field snapshots)")]
-    FieldEvery(f64),
-    #[error("--field-res {0}: must be in {lo}..={hi} pixels", lo = FIELD_RES_RANGE.start(), hi = FIELD_RES_RANGE.end())]
-    FieldRes(usize),
-    #[error("--field-window {0:?}: expected XMIN,XMAX,YMIN,YMAX (four finite numbers, XMIN < XMAX, YMIN < YMAX, containing the plate [-0.5, 0.5] x 0)")]
-    FieldWindow(String),
-    #[error("--streamlines-frame {0}: must be 1, 2, 3 or 4 (1 plate-fixed, 2 fluid-fixed, 3 translating, 4 rotating)")]
-    StreamlinesFrame(u8),
-    #[error("--server-memory-limit {value:?}: {reason}; accepted: a share of RAM like \"25%\", a size like \"2GB\", or \"unlimited\"")]
-    MemoryLimit { value: String, reason: String },
-    #[error("--connect {value:?}: not a Rerun proxy URL ({reason}); expected e.g. rerun+http://127.0.0.1:9876/proxy")]
-    ConnectUrl { value: String, reason: String },
-    #[error("--port {port}: cannot listen on {addr} ({reason})")]
-    Port {
-        port: u16,
-        addr: String,
-        reason: String,
-    },
-    #[error("--spawn: no `rerun` viewer executable on PATH (install it with `pip install rerun-sdk==0.36.3`), or use --serve and connect a viewer yourself")]
-    NoViewer,
-    #[error("{flag} {path}: {reason}")]
-    Path {
-        flag: &'static str,
-        path: String,
-        reason: String,
-    },
-}
-
-impl RecordArgs {
-    /// The default recording path for a case: `recordings/<case>.rrd`.
-    pub fn default_save_path(case: &str) -> PathBuf {
-        Path::new("recordings").join(format!("{case}.rrd"))
-    }
-
-    /// Validates the options for a run of `case` that ends at convective time `t_end`.
-    ///
-    /// Checks everything that can be checked before the run starts: numeric ranges, the --connect
-    /// URL, the --serve port (free?), `rerun` on PATH for --spawn, and that the .rrd and CSV paths
-    /// are writable (creating `recordings/` for the default path, but never any other directory).
-    pub fn resolve(&self, case: &str, t_end: f64) -> Result<RecordOptions, OptionsError> {
-        if !(self.field_every.is_finite() && self.field_every > 0.0) {
-            return Err(OptionsError::FieldEvery(self.field_every));
-        }
-        if !FIELD_RES_RANGE.contains(&self.field_res) {
-            return Err(OptionsError::FieldRes(self.field_res));
-        }
-        let field_window = parse_window(&self.field_window)
-            .ok_or_else(|| OptionsError::FieldWindow(self.field_window.clone()))?;
-        let streamlines_frame = StreamFrame::from_number(self.streamlines_frame)
-            .ok_or(OptionsError::StreamlinesFrame(self.streamlines_frame))?;
-
-        let serve = if self.serve {
-            rerun::MemoryLimit::parse(&self.server_memory_limit).map_err(|reason| {
-                OptionsError::MemoryLimit {
-                    value: self.server_memory_limit.clone(),
-                    reason,
-                }
-            })?;
-            let addr = SocketAddr::new(self.bind, self.port);
-            if let Err(err) = TcpListener::bind(addr) {
-                return Err(OptionsError::Port {
-                    port: self.port,
-                    addr: addr.to_string(),
-                    reason: err.to_string(),
-                });
-            }
-            Some(ServeOptions {
-                bind: self.bind,
-                port: self.port,
-                memory_limit: self.server_memory_limit.clone(),
-            })
-        } else {
-            None
-        };
-
-        let connect = match &self.connect {
-            Some(url) => {
-                check_proxy_url(url).map_err(|reason| OptionsError::ConnectUrl {
-                    value: url.clone(),
-                    reason,
-                })?;
-                Some(url.clone())
-            }
-            None => None,
-        };
-
-        if self.spawn && find_on_path("rerun").is_none() {
-            return Err(OptionsError::NoViewer);
-        }
-
-        let save = if self.no_save {
-            None
-        } else {
-            match &self.save {
-                Some(path) => {
-                    if path.extension().and_then(|e| e.to_str()) != Some("rrd") {
-                        return Err(OptionsError::Path {
-                            flag: "--save",
-                            path: path.display().to_string(),
-                            reason: "the file name must end in .rrd".into(),
-                        });
-                    }
-                    check_writable("--save", path, false)?;
-                    Some(path.clone())
-                }
-                None => {
-                    let path = Self::default_save_path(case);
-                    check_writable("--save", &path, true)?;
-                    Some(path)
-                }
-            }
-        };
-
-        let csv = match &self.csv {
-            Some(path) => {
-                if save.as_deref() == Some(path.as_path()) {
-                    return Err(OptionsError::Path {
-                        flag: "--csv",
-                        path: path.display().to_string(),
-                        reason: "is also the .rrd file".into(),
-                    });
-                }
-                check_writable("--csv", path, false)?;
-                Some(path.clone())
-            }
-            None => None,
-        };
-
-        let progress = if self.quiet {
-            ProgressMode::Off
-        } else {
-            self.progress
-        };
-
-        Ok(RecordOptions {
-            save,
-            serve,
-            connect,
-            spawn: self.spawn,
-            field_every: self.field_every,
-            field_res: self.field_res,
-            field_window,
-            streamlines_frame,
-            csv,
-            progress,
-            t_end,
-            ..RecordOptions::default()
-        })
-    }
-}
-
-/// "x0,x1,y0,y1" → a valid window containing the plate.
-fn parse_window(s: &str) -> Option<Window> {
-    let v: Vec<f64> = s
-        .split(',')
-        .map(|p| p.trim().parse::<f64>())
-        .collect::<Result<_, _>>()
-        .ok()?;
-    let [x0, x1, y0, y1] = v.as_slice() else {
-        return None;
-    };
-    let w = Window {
-        x0: *x0,
-        x1: *x1,
-        y0: *y0,
-        y1: *y1,
-    };
-    (w.is_valid() && w.x0 < -0.5 && w.x1 > 0.5 && w.y0 < 0.0 && w.y1 > 0.0).then_some(w)
-}
-
-/// Is `url` a Rerun proxy URL (`rerun+http://host:port/proxy`)?
-pub(crate) fn check_proxy_url(url: &str) -> Result<(), String> {
-    use std::str::FromStr as _;
-    rerun::external::re_uri::ProxyUri::from_str(url)
-        .map(|_| ())
-        .map_err(|e| e.to_string())
-}
-
-/// The first executable called `name` on PATH.
-pub(crate) fn find_on_path(name: &str) -> Option<PathBuf> {
-    let path = std::env::var_os("PATH")?;
-    std::env::split_paths(&path).find_map(|dir| {
-        let candidate = dir.join(name);
-        let meta = std::fs::metadata(&candidate).ok()?;
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::PermissionsExt as _;
-            if meta.is_file() && meta.permissions().mode() & 0o111 != 0 {
-                return Some(candidate);
-            }
-            None
-        }
-        #[cfg(not(unix))]
-        {
-            meta.is_file().then_some(candidate)
-        }
-    })
-}
-
-/// Refuses a path whose directory does not exist or is not writable, or that is a directory.
-/// With `create_dir`, creates the (default) parent directory first.
-fn check_writable(flag: &'static str, path: &Path, create_dir: bool) -> Result<(), OptionsError> {
-    let err = |reason: String| OptionsError::Path {
-        flag,
-        path: path.display().to_string(),
-        reason,
-    };
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    if create_dir {
-        std::fs::create_dir_all(&dir)
-            .map_err(|e| err(format!("cannot create directory {}: {e}", dir.display())))?;
-    }
-    match std::fs::metadata(&dir) {
-        Ok(m) if m.is_dir() => {}
-        Ok(_) => return Err(err(format!("{} is not a directory", dir.display()))),
-        Err(_) => {
-            return Err(err(format!(
-                "directory {} does not exist (create it first)",
-                dir.display()
-            )))
-        }
-    }
-    if path.is_dir() {
-        return Err(err("is a directory".into()));
-    }
-    // Probe: can we create a file in that directory?
-    let probe = dir.join(format!(
-        ".platefall-write-probe-{}-{}",
-        std::process::id(),
-        std::time::SystemTime::now()
-            .duration_since(std::time::UNIX_EPOCH)
-            .map(|d| d.as_nanos())
-            .unwrap_or(0)
-    ));
-    match std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(&probe)
-    {
-        Ok(_) => {
-            let _ = std::fs::remove_file(&probe);
-        }
-        Err(e) => {
-            return Err(err(format!(
-                "directory {} is not writable ({e})",
-                dir.display()
-            )))
-        }
-    }
-    if path.exists() {
-        std::fs::OpenOptions::new()
-            .append(true)
-            .open(path)
-            .map_err(|e| err(format!("exists and cannot be overwritten ({e})")))?;
-    }
-    Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use clap::Parser;
-
-    #[derive(Parser)]
-    struct Cli {
-        #[command(flatten)]
-        rec: RecordArgs,
-    }
-
-    fn args(extra: &[&str]) -> RecordArgs {
-        let mut argv = vec!["x"];
-        argv.extend_from_slice(extra);
-        Cli::try_parse_from(argv).expect("parse").rec
-    }
-
-    #[test]
-    fn defaults_resolve() {
-        let dir = std::env::temp_dir().join(format!("pf-opt-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let save = dir.join("a.rrd");
-        let o = args(&["--save", save.to_str().unwrap()])
-            .resolve("free", 60.0)
-            .unwrap();
-        assert_eq!(o.save.as_deref(), Some(save.as_path()));
-        assert_eq!(o.field_every, DEFAULT_FIELD_EVERY);
-        assert_eq!(o.streamlines_frame, StreamFrame::Translating);
-        assert_eq!(o.field_window, Window::default());
-        assert_eq!(o.t_end, 60.0);
-        let _ = std::fs::remove_dir_all(&dir);
-    }
-
-    #[test]
-    fn bad_values_are_refused_with_one_line() {
-        let cases: &[(&[&str], &str)] = &[
-            (&["--field-every", "0"], "--field-every 0"),
-            (&["--field-every", "inf"], "--field-every inf"),
-            (&["--field-res", "8"], "--field-res 8: must be in 16..=2048"),
-            (&["--streamlines-frame", "5"], "--streamlines-frame 5"),
-            (&["--field-window", "1,2,3"], "--field-window"),
-            (&["--save", "/nonexistent-dir-pf/x.rrd"], "does not exist"),
-            (&["--save", "/tmp/x.txt"], "must end in .rrd"),
-            (&["--csv", "/nonexistent-dir-pf/x.csv"], "--csv"),
-            (&["--connect", "http://nope"], "--connect"),
-            (
-                &["--serve", "--server-memory-limit", "lots"],
-                "--server-memory-limit",
-            ),
-        ];
-        for (argv, expect) in cases {
-            let mut a = args(argv);
-            if !argv.contains(&"--save") {
-                a.no_save = true;
-            }
-            let e = a.resolve("free", 1.0).unwrap_err().to_string();
-            assert!(e.contains(expect), "{argv:?}: {e}");
-            assert!(!e.contains('\n'), "one line: {e}");
-        }
-    }
-
-    #[test]
-    fn busy_port_is_detected() {
-        let l = TcpListener::bind("127.0.0.1:0").unwrap();
-        let port = l.local_addr().unwrap().port().to_string();
-        let mut a = args(&["--serve", "--port", &port]);
-        a.no_save = true;
-        let e = a.resolve("free", 1.0).unwrap_err().to_string();
-        assert!(e.starts_with(&format!("--port {port}")), "{e}");
     }
 }

@@ -2,10 +2,11 @@
 #![allow(dead_code)]
 use clap::Parser;
 use platefall::cli::{run_config, Cli};
-use platefall::config::RunConfig;
-use platefall::record::messages::{FieldSnapshot, StepSample};
+use platefall::post::report::report;
+use platefall::post::summary::{summarize, Summary};
+use platefall::sim::RunConfig;
+use platefall::sim::{FieldSnapshot, StepSample};
 use platefall::sim::{Observer, RunRecord, Simulation};
-use platefall::summary::{summarize, Summary};
 
 /// Discards everything; never stops early.
 pub struct Quiet;
@@ -32,7 +33,7 @@ pub fn run(args: &[&str]) -> (RunConfig, RunRecord, Summary) {
     let cfg = config(args);
     let mut sim = Simulation::new(cfg.clone()).expect("simulation builds");
     let rec = sim.run(&mut Quiet);
-    let sum = summarize(&cfg, &rec);
-    eprintln!("{}", platefall::summary::report(&cfg, &sum));
+    let sum = summarize(&cfg, &rec, 0.0);
+    eprintln!("{}", report(&cfg, &sum));
     (cfg, rec, sum)
 }

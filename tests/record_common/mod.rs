@@ -6,7 +6,10 @@ use std::io::BufReader;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use platefall::record::messages::{FieldSnapshot, GridGeometry, RunInfo, StepSample};
+use platefall::flow::Frame;
+use platefall::grid::GridGeometry;
+use platefall::record::messages::RunInfo;
+use platefall::sim::{FieldSnapshot, StepSample};
 use rerun::external::re_log_encoding::DecoderApp;
 use rerun::log::{Chunk, LogMsg};
 
@@ -101,7 +104,12 @@ pub fn snapshot(grid: &GridGeometry, s: &StepSample) -> FieldSnapshot {
     let (nx, ny) = (grid.nx(), grid.ny());
     let t = s.t;
     let (c, sn) = (s.theta.cos(), s.theta.sin());
-    let (gx0, gy0, om) = (s.xdot * c + s.ydot * sn, -s.xdot * sn + s.ydot * c, s.omega);
+    let frame = Frame {
+        u0: s.xdot * c + s.ydot * sn,
+        v0: -s.xdot * sn + s.ydot * c,
+        omega: s.omega,
+    };
+    let (gx0, gy0, om) = (frame.u0, frame.v0, frame.omega);
     let vortices: Vec<(f64, f64, f64)> = (0..6)
         .map(|k| {
             let x0 = 0.7 + 0.7 * k as f64 + 0.35 * (t % 2.0);
@@ -164,9 +172,7 @@ pub fn snapshot(grid: &GridGeometry, s: &StepSample) -> FieldSnapshot {
         x: s.x,
         y: s.y,
         theta: s.theta,
-        gx0,
-        gy0,
-        omega: om,
+        frame,
         u,
         v,
         p,

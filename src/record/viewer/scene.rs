@@ -12,9 +12,10 @@ use rerun::{
     TextLog, TimeColumn, Transform3D,
 };
 
-use super::messages::{FieldSnapshot, RunInfo, RunOutcome, RunStatus, StepSample};
-use super::options::RecordOptions;
 use crate::post::{FieldPainter, ImageGrid, PainterOptions};
+use crate::record::messages::{RunInfo, RunOutcome};
+use crate::record::options::RecordOptions;
+use crate::sim::{FieldSnapshot, RunStatus, StepSample};
 
 /// Entity paths (stable; see `record/mod.rs`).
 pub mod paths {

@@ -20,7 +20,7 @@ use crossbeam_channel::{bounded, Receiver, Sender, TrySendError};
 use rerun::log::LogMsg;
 use rerun::sink::{GrpcSink, GrpcSinkConnectionState, LogSink, SinkFlushError};
 
-use super::options::RecordOptions;
+use crate::record::options::RecordOptions;
 
 /// Messages queued for a --connect viewer before further ones are dropped.
 const CONNECT_QUEUE: usize = 512;

@@ -2,17 +2,21 @@
 //! lift frequency (Strouhal number) and turn counting for autorotation. Pure functions on samples.
 use std::f64::consts::PI;
 
-use crate::record::messages::StepSample;
+use crate::sim::StepSample;
 
 /// A time window [t0, t1] of the run.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
-pub struct Window {
+pub struct TimeWindow {
     pub t0: f64,
     pub t1: f64,
 }
 
 /// Time-weighted mean of `f` over the samples inside the window (trapezoidal in t).
-pub fn mean_over(samples: &[StepSample], w: Window, f: impl Fn(&StepSample) -> f64) -> Option<f64> {
+pub fn mean_over(
+    samples: &[StepSample],
+    w: TimeWindow,
+    f: impl Fn(&StepSample) -> f64,
+) -> Option<f64> {
     let mut acc = 0.0;
     let mut span = 0.0;
     for pair in samples.windows(2) {
@@ -29,7 +33,7 @@ pub fn mean_over(samples: &[StepSample], w: Window, f: impl Fn(&StepSample) -> f
 /// Largest and smallest of `f` inside the window.
 pub fn range_over(
     samples: &[StepSample],
-    w: Window,
+    w: TimeWindow,
     f: impl Fn(&StepSample) -> f64,
 ) -> Option<(f64, f64)> {
     samples
@@ -45,7 +49,7 @@ pub fn range_over(
 /// Resamples `f` onto a uniform grid of step `h` over the window (linear interpolation).
 fn resample(
     samples: &[StepSample],
-    w: Window,
+    w: TimeWindow,
     h: f64,
     f: &impl Fn(&StepSample) -> f64,
 ) -> Vec<f64> {
@@ -74,7 +78,7 @@ fn resample(
 /// peak-to-peak band is below `steady_band` (the flow is steady) or the window is too short.
 pub fn dominant_frequency(
     samples: &[StepSample],
-    w: Window,
+    w: TimeWindow,
     steady_band: f64,
     f: impl Fn(&StepSample) -> f64,
 ) -> Option<f64> {
@@ -129,10 +133,10 @@ pub fn dominant_frequency(
 }
 
 /// Shrinks a window from its start so it holds a whole number of periods (at least one).
-pub fn whole_periods(w: Window, period: f64) -> Window {
+pub fn whole_periods(w: TimeWindow, period: f64) -> TimeWindow {
     let n = ((w.t1 - w.t0) / period).floor();
     if n >= 1.0 {
-        Window {
+        TimeWindow {
             t0: w.t1 - n * period,
             t1: w.t1,
         }
@@ -208,20 +212,20 @@ mod tests {
     #[test]
     fn finds_a_sine_frequency_within_half_a_percent() {
         let s = series(|t| 0.3 + (2.0 * PI * 0.37 * t).sin(), 60.0, 0.013);
-        let f = dominant_frequency(&s, Window { t0: 10.0, t1: 60.0 }, 1e-3, |s| s.cl).unwrap();
+        let f = dominant_frequency(&s, TimeWindow { t0: 10.0, t1: 60.0 }, 1e-3, |s| s.cl).unwrap();
         assert!((f - 0.37).abs() < 0.002, "{f}");
     }
 
     #[test]
     fn steady_signal_has_no_frequency() {
         let s = series(|t| 1.0 + 1e-5 * t.sin(), 30.0, 0.01);
-        assert!(dominant_frequency(&s, Window { t0: 0.0, t1: 30.0 }, 1e-3, |s| s.cl).is_none());
+        assert!(dominant_frequency(&s, TimeWindow { t0: 0.0, t1: 30.0 }, 1e-3, |s| s.cl).is_none());
     }
 
     #[test]
     fn mean_of_a_sine_over_whole_periods_is_its_offset() {
         let s = series(|t| 2.0 + (2.0 * PI * t / 3.0).sin(), 30.0, 0.001);
-        let w = whole_periods(Window { t0: 1.0, t1: 30.0 }, 3.0);
+        let w = whole_periods(TimeWindow { t0: 1.0, t1: 30.0 }, 3.0);
         assert!((mean_over(&s, w, |s| s.cl).unwrap() - 2.0).abs() < 1e-6);
     }
 

@@ -1,45 +1,16 @@
-//! Command-line interface: one subcommand per case (SPEC §1) plus `bench`.
+//! The case subcommands' options and their translation into a [`RunConfig`].
 use std::path::PathBuf;
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
+use clap::{Args, ValueEnum};
 
-use crate::body::{AbStart, PhysicalPlate, PlateProps};
-use crate::config::{BodyConfig, Case, ConfigError, RunConfig};
+use super::flags::ArgError;
+use super::record_args::RecordArgs;
+use super::Command;
+use crate::body::{AbStart, PlateProps};
+use crate::config::PhysicalPlate;
 use crate::flow::FlowParams;
 use crate::grid::{GridSpec, Stretch};
-use crate::record::options::RecordArgs;
-
-/// A thin plate falling through a viscous fluid: 2-D Navier–Stokes in a body-fixed grid coupled to
-/// the plate's flight mechanics, streamed live to the Rerun viewer.
-///
-/// All quantities are non-dimensional: lengths on the chord c, speeds on the reference speed U,
-/// time on c/U (one "convective time").
-#[derive(Parser, Debug)]
-#[command(
-    name = "platefall",
-    version,
-    about,
-    long_about,
-    propagate_version = true
-)]
-pub struct Cli {
-    #[command(subcommand)]
-    pub command: Command,
-}
-
-#[derive(Subcommand, Debug)]
-pub enum Command {
-    /// Case A: a plate impulsively started at a fixed angle of attack (vortex shedding, C_L, C_D, Strouhal).
-    Static(StaticArgs),
-    /// Case B: a translating plate spun up at constant angular acceleration to a rate, then held.
-    Forced(ForcedArgs),
-    /// Case C: a translating plate free to rotate about its centre (pinned autorotation).
-    Pinned(PinnedArgs),
-    /// Case D: a plate released into free fall under gravity (the tumbling card).
-    Free(FreeArgs),
-    /// Time the flow step alone on several grid sizes (ns per cell per step, momentum vs pressure).
-    Bench(BenchArgs),
-}
+use crate::sim::{BodyConfig, Case, RunConfig, TimeControl};
 
 /// Options shared by every case.
 #[derive(Args, Debug, Clone)]
@@ -237,17 +208,19 @@ impl SolverArgs {
                 ..FlowParams::default()
             },
             body,
-            t_end: self.t_end.unwrap_or(default_t_end),
-            turns,
-            dt_max: self.dt_max,
-            cc: self.cc,
+            time: TimeControl {
+                t_end: self.t_end.unwrap_or(default_t_end),
+                turns,
+                dt_max: self.dt_max,
+                cc: self.cc,
+            },
         }
     }
 }
 
 impl BodyArgs {
     /// Plate properties and default Re: the preset's, overridden by explicit values.
-    fn resolve(&self) -> Result<(BodyConfig, Option<f64>), ConfigError> {
+    fn resolve(&self) -> Result<(BodyConfig, Option<f64>), ArgError> {
         let (preset, base, re) = match self.preset {
             Preset::Card => {
                 let card = PhysicalPlate::card();
@@ -259,10 +232,11 @@ impl BodyArgs {
             }
             Preset::None => (None, None, None),
         };
-        let pick = |name: &str, given: Option<f64>, from: Option<f64>| {
-            given
-                .or(from)
-                .ok_or_else(|| ConfigError(format!("{name} is required with --preset none")))
+        let pick = |flag: &'static str, given: Option<f64>, from: Option<f64>| {
+            given.or(from).ok_or(ArgError::Missing {
+                flag,
+                when: "with --preset none",
+            })
         };
         let props = PlateProps {
             mass: pick("--mass", self.mass, base.map(|b| b.mass))?,
@@ -286,67 +260,58 @@ impl BodyArgs {
 }
 
 /// The run configuration of a case subcommand, validated.
-pub fn run_config(cmd: &Command) -> Result<RunConfig, ConfigError> {
+pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
     let cfg = match cmd {
-        Command::Static(a) => a.solver.config(
-            Case::Static {
+        Command::Static(a) => {
+            let case = Case::Static {
                 alpha: a.alpha,
                 kick: a.kick,
-            },
-            5000.0,
-            80.0,
-            None,
-            None,
-        ),
+            };
+            a.solver.config(case, 5000.0, 80.0, None, None)
+        }
         Command::Forced(a) => {
             let t_end = a.spinup + 6.0 * std::f64::consts::PI / a.rate.abs().max(1e-3);
-            a.solver.config(
-                Case::Forced {
-                    rate: a.rate,
-                    spinup: a.spinup,
-                },
-                5000.0,
-                t_end.min(200.0),
-                None,
-                None,
-            )
+            let case = Case::Forced {
+                omega: a.rate,
+                spinup: a.spinup,
+            };
+            a.solver.config(case, 5000.0, t_end.min(200.0), None, None)
         }
         Command::Pinned(a) => {
-            let (body, re) = a.body.resolve()?;
-            let re = a
-                .solver
-                .re
-                .or(re)
-                .ok_or_else(|| ConfigError("--re is required with --preset none".into()))?;
             let case = Case::Pinned {
                 alpha0: a.alpha0,
                 develop: a.body.develop,
             };
-            a.solver.config(case, re, 60.0, Some(body), a.body.turns)
+            coupled_config(&a.solver, &a.body, case, 60.0, a.body.turns)?
         }
         Command::Free(a) => {
-            let (body, re) = a.body.resolve()?;
-            let re = a
-                .solver
-                .re
-                .or(re)
-                .ok_or_else(|| ConfigError("--re is required with --preset none".into()))?;
             let case = Case::Free {
                 v0: a.v0,
                 gamma0: a.gamma0,
                 alpha0: a.alpha0,
                 develop: a.body.develop,
             };
-            a.solver.config(
-                case,
-                re,
-                80.0,
-                Some(body),
-                Some(a.body.turns.unwrap_or(10.0)),
-            )
+            let turns = Some(a.body.turns.unwrap_or(10.0));
+            coupled_config(&a.solver, &a.body, case, 80.0, turns)?
         }
-        Command::Bench(_) => return Err(ConfigError("bench has no run configuration".into())),
+        Command::Bench(_) => return Err(ArgError::NotACase("bench")),
     };
     cfg.validate()?;
     Ok(cfg)
+}
+
+/// A pinned or free run: the plate from its preset and overrides, Re from --re or the preset.
+fn coupled_config(
+    solver: &SolverArgs,
+    body: &BodyArgs,
+    case: Case,
+    default_t_end: f64,
+    turns: Option<f64>,
+) -> Result<RunConfig, ArgError> {
+    let (body, preset_re) = body.resolve()?;
+    let re = solver.re.or(preset_re).ok_or(ArgError::Missing {
+        flag: "--re",
+        when: "with --preset none",
+    })?;
+    Ok(solver.config(case, re, default_t_end, Some(body), turns))
 }

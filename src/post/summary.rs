@@ -1,15 +1,14 @@
-//! The run summary (stable JSON keys for scripts) and the human-readable end-of-run report,
-//! including the comparison with the seed's reference figures (SPEC §8).
+//! The run summary: stable JSON keys for scripts, computed from the time series of a run over its
+//! developed part.
 use std::f64::consts::PI;
 
 use serde::Serialize;
 
-use crate::analysis::{
-    count_turns, dominant_frequency, mean_over, range_over, whole_periods, Window,
+use super::analysis::{
+    count_turns, dominant_frequency, mean_over, range_over, whole_periods, TimeWindow,
 };
-use crate::config::{Case, RunConfig};
-use crate::record::messages::{RunStatus, StepSample};
-use crate::sim::RunRecord;
+use crate::config::physical;
+use crate::sim::{Case, RunConfig, RunRecord, StepSample};
 
 /// Peak-to-peak C_L below which the flow counts as steady (no Strouhal number).
 pub const STEADY_BAND: f64 = 0.02;
@@ -55,14 +54,6 @@ pub struct Summary {
     pub mean_omega_rad_s: Option<f64>,
 }
 
-fn status_name(s: &RunStatus) -> String {
-    match s {
-        RunStatus::Completed => "completed".into(),
-        RunStatus::Diverged(_) => "diverged".into(),
-        RunStatus::Interrupted => "interrupted".into(),
-    }
-}
-
 /// The developed window: for coupled cases the whole turns after autorotation is established (the
 /// first complete turn after release); for forced rotation the whole half-turns after spin-up plus
 /// one half-turn; for the static case the second half of the run, trimmed to whole lift periods.
@@ -70,13 +61,13 @@ fn developed(
     config: &RunConfig,
     rec: &RunRecord,
     freq: Option<f64>,
-) -> (Option<Window>, String, Option<f64>) {
+) -> (Option<TimeWindow>, String, Option<f64>) {
     let Some(last) = rec.samples.last() else {
         return (None, "no steps".into(), None);
     };
     match &config.case {
         Case::Static { .. } => {
-            let w = Window {
+            let w = TimeWindow {
                 t0: 0.5 * last.t,
                 t1: last.t,
             };
@@ -89,9 +80,9 @@ fn developed(
                 None => (Some(w), "second half of the run (steady)".into(), None),
             }
         }
-        Case::Forced { rate, spinup } => {
-            let half_turn = PI / rate.abs();
-            let w = Window {
+        Case::Forced { omega, spinup } => {
+            let half_turn = PI / omega.abs();
+            let w = TimeWindow {
                 t0: spinup + half_turn,
                 t1: last.t,
             };
@@ -112,7 +103,7 @@ fn developed(
             let turns = count_turns(&rec.samples, rec.t_release);
             let established = turns.completed.first().copied();
             let w = match (established, turns.completed.last()) {
-                (Some(a), Some(&b)) if b > a => Some(Window { t0: a, t1: b }),
+                (Some(a), Some(&b)) if b > a => Some(TimeWindow { t0: a, t1: b }),
                 _ => None,
             };
             (
@@ -127,7 +118,7 @@ fn developed(
 /// Mean lag (in α) of the maximum of C_D behind the maximum of C_L, per half-turn (period π in θ).
 /// For clockwise rotation the lift is taken in the rotation's own sense (−C_L): the mirror image
 /// y → −y of a counter-clockwise run turns clockwise with C_L negated and C_D unchanged.
-fn lag_cd_behind_cl(samples: &[StepSample], w: Window) -> Option<f64> {
+fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
     let inside: Vec<&StepSample> = samples
         .iter()
         .filter(|s| s.t >= w.t0 && s.t <= w.t1)
@@ -158,10 +149,11 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: Window) -> Option<f64> {
     (!lags.is_empty()).then(|| lags.iter().sum::<f64>() / lags.len() as f64)
 }
 
-pub fn summarize(config: &RunConfig, rec: &RunRecord) -> Summary {
+/// The summary of a run; `wall_seconds` is measured by the caller (the solver reads no clock).
+pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summary {
     let s = &rec.samples;
     let last_t = s.last().map(|x| x.t).unwrap_or(0.0);
-    let provisional = Window {
+    let provisional = TimeWindow {
         t0: 0.5 * last_t,
         t1: last_t,
     };
@@ -181,16 +173,16 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord) -> Summary {
     };
     let mean_speed = if coupled { mean(|x| x.speed) } else { None };
     let mean_omega = if moving { mean(|x| x.omega) } else { None };
-    let physical = config.physical();
+    let physical = physical(config);
     Summary {
         case: config.case.name().into(),
-        status: status_name(&rec.status),
+        status: rec.status.name().into(),
         re: config.flow.re,
         resolution: config.grid.resolution,
         cells: rec.cells,
         steps: s.len() as u64,
         t_end: last_t,
-        wall_seconds: rec.wall_seconds,
+        wall_seconds,
         developed_from: w.map(|w| w.t0),
         developed_to: w.map(|w| w.t1),
         developed_rule: rule,
@@ -228,183 +220,6 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord) -> Summary {
     }
 }
 
-fn fmt_opt(x: Option<f64>, digits: usize) -> String {
-    x.map(|v| format!("{v:.digits$}"))
-        .unwrap_or_else(|| "—".into())
-}
-
-/// The end-of-run report: the run's figures and the SPEC §8 comparison for its case.
-pub fn report(config: &RunConfig, sum: &Summary) -> String {
-    let mut r = String::new();
-    r.push_str(&format!("platefall {} — {}\n", sum.case, config.title()));
-    r.push_str(&format!(
-        "status {}: {} steps to t = {:.3} in {:.1} s ({} cells, {:.0} ns/cell/step)\n",
-        sum.status,
-        sum.steps,
-        sum.t_end,
-        sum.wall_seconds,
-        sum.cells,
-        1e9 * sum.wall_seconds / (sum.steps.max(1) as f64 * sum.cells as f64)
-    ));
-    r.push_str(&format!(
-        "developed part: {} .. {} ({})\n",
-        fmt_opt(sum.developed_from, 2),
-        fmt_opt(sum.developed_to, 2),
-        sum.developed_rule
-    ));
-    r.push_str(&format!(
-        "mean C_L {}  C_D {}  C_M {}   C_L band [{}, {}]   max C_D {}\n",
-        fmt_opt(sum.mean_cl, 3),
-        fmt_opt(sum.mean_cd, 3),
-        fmt_opt(sum.mean_cm, 3),
-        fmt_opt(sum.min_cl, 3),
-        fmt_opt(sum.max_cl, 3),
-        fmt_opt(sum.max_cd, 3)
-    ));
-    let mut table: Vec<(String, String, String)> = Vec::new();
-    match config.case {
-        Case::Static { alpha, .. } => {
-            r.push_str(&format!(
-                "Strouhal: {} on the chord, {} on the projected width\n",
-                fmt_opt(sum.strouhal_chord, 3),
-                fmt_opt(sum.strouhal_width, 3)
-            ));
-            if (alpha - 0.4).abs() < 0.05 {
-                table.push((
-                    "Strouhal (chord / width)".into(),
-                    format!(
-                        "{} / {}",
-                        fmt_opt(sum.strouhal_chord, 3),
-                        fmt_opt(sum.strouhal_width, 3)
-                    ),
-                    "0.34 / 0.13".into(),
-                ));
-            }
-            if (alpha - PI / 2.0).abs() < 0.05 {
-                table.push((
-                    "mean C_D".into(),
-                    fmt_opt(sum.mean_cd, 3),
-                    "1.494 (seed, symmetric wake); 1.4 experiment".into(),
-                ));
-            }
-            if alpha.abs() <= 0.16 {
-                table.push((
-                    "C_L (steady up to α ≈ 0.15)".into(),
-                    fmt_opt(sum.mean_cl, 3),
-                    "≈ 0.44 at α = 0.15".into(),
-                ));
-            }
-        }
-        Case::Forced { rate, .. } => {
-            r.push_str(&format!(
-                "lag of max C_D behind max C_L: {} rad of α; mean moment over whole turns {}\n",
-                fmt_opt(sum.lag_cd_behind_cl, 2),
-                fmt_opt(sum.mean_cm, 4)
-            ));
-            let seed = [
-                (1.0, "3.2", "1.1", "accelerating"),
-                (2.0, "5.8", "1.0", "≈ neutral"),
-                (4.0, "9.5", "0.75", "retarding"),
-            ];
-            if let Some((_, cl, lag, m)) = seed.iter().find(|(k, ..)| (rate.abs() - k).abs() < 1e-9)
-            {
-                table.push((
-                    "max C_L".into(),
-                    fmt_opt(sum.peak_cl_rotation, 2),
-                    (*cl).into(),
-                ));
-                table.push((
-                    "lag of max C_D (rad)".into(),
-                    fmt_opt(sum.lag_cd_behind_cl, 2),
-                    (*lag).into(),
-                ));
-                let mine = sum
-                    .mean_cm
-                    .map(|m| {
-                        if m * rate > 0.0 {
-                            "accelerating"
-                        } else {
-                            "retarding"
-                        }
-                    })
-                    .unwrap_or("—");
-                table.push((
-                    "mean moment".into(),
-                    format!("{mine} ({})", fmt_opt(sum.mean_cm, 4)),
-                    (*m).into(),
-                ));
-            }
-        }
-        Case::Pinned { .. } | Case::Free { .. } => {
-            r.push_str(&format!(
-                "revolutions {}  autorotation established at t = {}\nmean V {}  mean θ̇ {}  mean γ {}\n",
-                fmt_opt(sum.revolutions, 2),
-                fmt_opt(sum.autorotation_time, 2),
-                fmt_opt(sum.mean_speed, 3),
-                fmt_opt(sum.mean_omega, 3),
-                fmt_opt(sum.mean_gamma, 3)
-            ));
-            if matches!(config.case, Case::Pinned { .. }) {
-                table.push((
-                    "mean θ̇ (c/U)".into(),
-                    fmt_opt(sum.mean_omega.map(f64::abs), 3),
-                    "1.58".into(),
-                ));
-                table.push((
-                    "lag of max C_D behind max C_L".into(),
-                    fmt_opt(sum.lag_cd_behind_cl, 2),
-                    "0.70 rad".into(),
-                ));
-            } else if sum.mean_speed_ft_s.is_some() {
-                table.push((
-                    "mean speed (ft/s)".into(),
-                    fmt_opt(sum.mean_speed_ft_s, 2),
-                    "3.01 (seed), 3.75 (experiment)".into(),
-                ));
-                table.push((
-                    "mean rotation (rad/s)".into(),
-                    fmt_opt(sum.mean_omega_rad_s, 2),
-                    "19.56 (seed), 23.4 (experiment)".into(),
-                ));
-                table.push((
-                    "mean flight-path angle (rad)".into(),
-                    fmt_opt(sum.mean_gamma, 3),
-                    "−0.20 (seed), −0.81 (experiment)".into(),
-                ));
-                table.push((
-                    "max C_L in autorotation".into(),
-                    fmt_opt(sum.peak_cl_rotation, 2),
-                    "≈ 6.2 (seed)".into(),
-                ));
-            }
-        }
-    }
-    if !table.is_empty() {
-        r.push_str("\ncomparison with the seed (SPEC §8)\n");
-        let w0 = table.iter().map(|x| x.0.chars().count()).max().unwrap_or(0);
-        let w1 = table
-            .iter()
-            .map(|x| x.1.chars().count())
-            .max()
-            .unwrap_or(0)
-            .max(9);
-        r.push_str(&format!(
-            "  {:w0$}  {:w1$}  {}\n",
-            "quantity", "this run", "seed / experiment"
-        ));
-        for (a, b, c) in table {
-            let pa = w0 - a.chars().count();
-            let pb = w1 - b.chars().count();
-            r.push_str(&format!(
-                "  {a}{}  {b}{}  {c}\n",
-                " ".repeat(pa),
-                " ".repeat(pb)
-            ));
-        }
-    }
-    r
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -434,7 +249,7 @@ mod tests {
 
     #[test]
     fn lag_of_drag_behind_lift_is_the_same_for_mirror_image_rotations() {
-        let w = Window { t0: 1.0, t1: 19.0 };
+        let w = TimeWindow { t0: 1.0, t1: 19.0 };
         let ccw = lag_cd_behind_cl(&turning(2.0), w).unwrap();
         let cw = lag_cd_behind_cl(&turning(-2.0), w).unwrap();
         assert!((ccw - 0.5).abs() < 0.01, "counter-clockwise lag {ccw}");

@@ -1,7 +1,7 @@
 //! The seed's card (SPEC §8, seed Table I) in physical units, and its non-dimensional parameters
 //! (SPEC §2). Units are the seed's: ft, lbf, slug, s.
 
-use super::rigid::PlateProps;
+use crate::body::PlateProps;
 
 /// A physical plate in a physical fluid (SPEC §2, §8), feet–slug–second units.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]

@@ -1,0 +1,30 @@
+//! A static plate at α = 0.4 run from Rust: describe the run, step it to the end, print C_D.
+use platefall::grid::GridSpec;
+use platefall::sim::{Case, RunConfig, Simulation, TimeControl};
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let time = TimeControl {
+        t_end: 10.0,
+        turns: None,
+        dt_max: 0.01,
+        cc: 0.005,
+    };
+    let case = Case::Static {
+        alpha: 0.4,
+        kick: 0.0,
+    };
+    let config = RunConfig {
+        case,
+        grid: GridSpec::modern(16),
+        flow: Default::default(),
+        body: None,
+        time,
+    };
+    let mut sim = Simulation::new(config)?;
+    while !sim.finished() {
+        sim.step()?;
+    }
+    let s = sim.sample();
+    println!("t = {:.2}: C_D = {:.3}, C_L = {:.3}", s.t, s.cd, s.cl);
+    Ok(())
+}

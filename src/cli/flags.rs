@@ -1,0 +1,67 @@
+//! The library names a bad input by its quantity ([`Param`]); the command line names its flag.
+use crate::param::{InputError, Param};
+
+/// The flag that sets `p`.
+pub fn flag(p: Param) -> &'static str {
+    match p {
+        Param::Resolution => "--resolution",
+        Param::Thickness => "--thickness",
+        Param::ExtentX | Param::ExtentY => "--extent",
+        Param::Growth => "--growth",
+        Param::StretchIntervals => "--seed-grid",
+        Param::Reynolds => "--re",
+        Param::Cfl => "--cfl",
+        Param::TEnd => "--t-end",
+        Param::DtMax => "--dt-max",
+        Param::Cc => "--cc",
+        Param::Turns => "--turns",
+        Param::Alpha => "--alpha",
+        Param::Kick => "--kick",
+        Param::ForcedOmega => "--rate",
+        Param::Spinup => "--spinup",
+        Param::Alpha0 => "--alpha0",
+        Param::Develop => "--develop",
+        Param::V0 => "--v0",
+        Param::Gamma0 => "--gamma0",
+        Param::Mass => "--mass",
+        Param::Inertia => "--inertia",
+        Param::Gravity => "--gravity",
+        Param::AbOrder => "--ab-order",
+    }
+}
+
+/// A bad command line: one line naming the flag, the value and what is accepted.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum ArgError {
+    /// A value the library refused.
+    #[error("{}", input_message(.0))]
+    Input(#[from] InputError),
+    /// A value the command line needs and did not get.
+    #[error("{flag} is required {when}")]
+    Missing {
+        flag: &'static str,
+        when: &'static str,
+    },
+    /// A subcommand that describes no run.
+    #[error("`{0}` is not a case subcommand (static, forced, pinned, free)")]
+    NotACase(&'static str),
+}
+
+/// The library's message with the flag put in front of the quantity's value.
+fn input_message(e: &InputError) -> String {
+    match e {
+        InputError::OutOfRange {
+            param,
+            value,
+            accepted,
+        } => format!(
+            "{} {value} is out of range: accepted {accepted} ({})",
+            flag(*param),
+            param.describe()
+        ),
+        InputError::Inconsistent { param, value, why } => {
+            format!("{} {value} is not accepted: {why}", flag(*param))
+        }
+        InputError::MissingPlate => e.to_string(),
+    }
+}

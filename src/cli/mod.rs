@@ -1,0 +1,61 @@
+//! The command line: one subcommand per case (SPEC §1) plus `bench`. The only layer that knows
+//! clap; it turns flags into the library's typed descriptions and its typed errors into one-line
+//! messages that name the flag.
+pub mod args;
+pub mod bench;
+pub mod flags;
+pub mod record_args;
+pub mod run;
+
+use clap::{Parser, Subcommand};
+
+pub use args::{
+    run_config, BenchArgs, BodyArgs, ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs,
+};
+pub use flags::ArgError;
+pub use record_args::RecordArgs;
+
+/// A thin plate falling through a viscous fluid: 2-D Navier–Stokes in a body-fixed grid coupled to
+/// the plate's flight mechanics, streamed live to the Rerun viewer.
+///
+/// All quantities are non-dimensional: lengths on the chord c, speeds on the reference speed U,
+/// time on c/U (one "convective time").
+#[derive(Parser, Debug)]
+#[command(
+    name = "platefall",
+    version,
+    about,
+    long_about,
+    propagate_version = true
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Case A: a plate impulsively started at a fixed angle of attack (vortex shedding, C_L, C_D, Strouhal).
+    Static(StaticArgs),
+    /// Case B: a translating plate spun up at constant angular acceleration to a rate, then held.
+    Forced(ForcedArgs),
+    /// Case C: a translating plate free to rotate about its centre (pinned autorotation).
+    Pinned(PinnedArgs),
+    /// Case D: a plate released into free fall under gravity (the tumbling card).
+    Free(FreeArgs),
+    /// Time the flow step alone on several grid sizes (ns per cell per step, momentum vs pressure).
+    Bench(BenchArgs),
+}
+
+impl Command {
+    /// The options every case subcommand shares: the solver's and the recording's (None for bench).
+    pub fn case_args(&self) -> Option<(&SolverArgs, &RecordArgs)> {
+        match self {
+            Command::Static(a) => Some((&a.solver, &a.record)),
+            Command::Forced(a) => Some((&a.solver, &a.record)),
+            Command::Pinned(a) => Some((&a.solver, &a.record)),
+            Command::Free(a) => Some((&a.solver, &a.record)),
+            Command::Bench(_) => None,
+        }
+    }
+}

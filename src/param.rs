@@ -1,0 +1,161 @@
+//! The named inputs of a run and the one error every layer reports a bad input with.
+//!
+//! The library names a bad value by the quantity it is ([`Param`]); the command line turns that
+//! name into its flag (`cli::flags`), so the same check serves Rust callers and the CLI.
+use std::fmt;
+
+/// An input quantity of a run (SPEC §2–§6), for error messages.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Param {
+    /// Cells per chord N.
+    Resolution,
+    /// Plate thickness (chords).
+    Thickness,
+    /// Distance from the plate to the outer boundary along x (chords).
+    ExtentX,
+    /// Distance from the plate to the outer boundary along y (chords).
+    ExtentY,
+    /// Cap on the cell growth ratio.
+    Growth,
+    /// Number of stretched intervals of a patch.
+    StretchIntervals,
+    Reynolds,
+    Cfl,
+    TEnd,
+    DtMax,
+    /// The seed's rotation rule C_c.
+    Cc,
+    Turns,
+    Alpha,
+    Kick,
+    /// The forced rotation rate θ̇.
+    ForcedOmega,
+    Spinup,
+    Alpha0,
+    Develop,
+    V0,
+    Gamma0,
+    Mass,
+    Inertia,
+    Gravity,
+    AbOrder,
+}
+
+impl Param {
+    /// What the quantity is, in words (the library's name for it).
+    pub fn describe(self) -> &'static str {
+        match self {
+            Param::Resolution => "resolution",
+            Param::Thickness => "plate thickness (chords)",
+            Param::ExtentX => "extent along x (chords)",
+            Param::ExtentY => "extent along y (chords)",
+            Param::Growth => "growth cap",
+            Param::StretchIntervals => "stretched intervals",
+            Param::Reynolds => "Reynolds number",
+            Param::Cfl => "Courant number",
+            Param::TEnd => "end time",
+            Param::DtMax => "time-step ceiling",
+            Param::Cc => "rotation rule C_c",
+            Param::Turns => "turns",
+            Param::Alpha => "angle of attack α (rad)",
+            Param::Kick => "start-up kick (rad)",
+            Param::ForcedOmega => "forced rotation rate θ̇ (c/U)",
+            Param::Spinup => "spin-up time",
+            Param::Alpha0 => "launch angle of attack α₀ (rad)",
+            Param::Develop => "development time",
+            Param::V0 => "launch speed V₀ (on the reference speed)",
+            Param::Gamma0 => "launch flight-path angle γ₀ (rad)",
+            Param::Mass => "mass ratio m*",
+            Param::Inertia => "inertia ratio I*",
+            Param::Gravity => "gravity g*",
+            Param::AbOrder => "Adams–Bashforth order",
+        }
+    }
+}
+
+/// The accepted values of a quantity, as shown in messages.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Accepted {
+    /// lo ≤ x ≤ hi, or lo < x ≤ hi when `open_lo`.
+    Real { lo: f64, hi: f64, open_lo: bool },
+    /// A whole number in lo..=hi.
+    Whole { lo: usize, hi: usize },
+}
+
+impl fmt::Display for Accepted {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Accepted::Real { lo, hi, open_lo } => {
+                write!(f, "{}{lo}, {hi}]", if open_lo { "(" } else { "[" })
+            }
+            Accepted::Whole { lo, hi } => write!(f, "{lo}..={hi}"),
+        }
+    }
+}
+
+/// A bad input value: which quantity, the value, and what is accepted (or why not).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum InputError {
+    /// The value is outside the accepted range.
+    #[error("{} {value} is out of range: accepted {accepted}", .param.describe())]
+    OutOfRange {
+        param: Param,
+        value: f64,
+        accepted: Accepted,
+    },
+    /// The value is in range on its own but not together with the others; `why` says which.
+    #[error("{} = {value} is not accepted: {why}", .param.describe())]
+    Inconsistent {
+        param: Param,
+        value: f64,
+        why: String,
+    },
+    /// A coupled case without plate properties.
+    #[error("a coupled case needs plate properties")]
+    MissingPlate,
+}
+
+impl InputError {
+    /// The quantity the error is about, if any.
+    pub fn param(&self) -> Option<Param> {
+        match self {
+            InputError::OutOfRange { param, .. } | InputError::Inconsistent { param, .. } => {
+                Some(*param)
+            }
+            InputError::MissingPlate => None,
+        }
+    }
+}
+
+/// Checks that `value` is finite and in [lo, hi] (or (lo, hi] when `open_lo`).
+pub fn check_range(
+    param: Param,
+    value: f64,
+    lo: f64,
+    hi: f64,
+    open_lo: bool,
+) -> Result<(), InputError> {
+    let ok = value.is_finite() && value <= hi && if open_lo { value > lo } else { value >= lo };
+    if ok {
+        Ok(())
+    } else {
+        Err(InputError::OutOfRange {
+            param,
+            value,
+            accepted: Accepted::Real { lo, hi, open_lo },
+        })
+    }
+}
+
+/// Checks that a whole number lies in lo..=hi.
+pub fn check_whole(param: Param, value: usize, lo: usize, hi: usize) -> Result<(), InputError> {
+    if (lo..=hi).contains(&value) {
+        Ok(())
+    } else {
+        Err(InputError::OutOfRange {
+            param,
+            value: value as f64,
+            accepted: Accepted::Whole { lo, hi },
+        })
+    }
+}

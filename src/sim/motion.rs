@@ -1,0 +1,93 @@
+//! The motion laws of the four cases (SPEC §1, cases A–D): what is prescribed, and when the plate
+//! is released to its own equations of motion.
+use std::f64::consts::PI;
+
+use serde::{Deserialize, Serialize};
+
+use crate::body::BodyState;
+
+/// The prescribed or free motion of a run (SPEC §1, cases A–D).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Case {
+    /// A: translates at U to the right (+X) at a fixed angle of attack α, impulsively started.
+    /// During the first convective time the pitch is nudged by `kick`·sin²(πt) (smooth, zero at
+    /// both ends) so that a symmetric configuration (α = π/2) does not rely on round-off to break
+    /// its symmetry; afterwards α is exact.
+    Static { alpha: f64, kick: f64 },
+    /// B: translates at U; θ spun up from 0 at constant angular acceleration over `spinup` convective
+    /// times to the rate θ̇ = `omega`, then held.
+    Forced { omega: f64, spinup: f64 },
+    /// C: translates at U, free to rotate about its centre; held at α₀ for `develop`, then released.
+    Pinned { alpha0: f64, develop: f64 },
+    /// D: moves at V₀ along γ₀ at α₀ for `develop`, then falls freely (3 DOF, gravity).
+    Free {
+        v0: f64,
+        gamma0: f64,
+        alpha0: f64,
+        develop: f64,
+    },
+}
+
+impl Case {
+    pub fn name(&self) -> &'static str {
+        match self {
+            Case::Static { .. } => "static",
+            Case::Forced { .. } => "forced",
+            Case::Pinned { .. } => "pinned",
+            Case::Free { .. } => "free",
+        }
+    }
+
+    /// Whether the plate's equations of motion are integrated.
+    pub fn is_coupled(&self) -> bool {
+        matches!(self, Case::Pinned { .. } | Case::Free { .. })
+    }
+
+    /// The release time (coupled), the end of spin-up (forced) or 0 (static).
+    pub fn release_time(&self) -> f64 {
+        match *self {
+            Case::Static { .. } => 0.0,
+            Case::Forced { spinup, .. } => spinup,
+            Case::Pinned { develop, .. } | Case::Free { develop, .. } => develop,
+        }
+    }
+
+    /// The prescribed motion at time t: cases A and B, and the development phase of C and D.
+    ///
+    /// A: X = t, θ = α (+ the start-up kick ε sin²(πt) for t < 1). B: X = t, θ̈ = θ̇/T_s for
+    /// t < T_s, then θ̇ held. C: X = t, θ = α₀. D: moving at V₀ along γ₀ with θ = γ₀ + α₀.
+    pub fn prescribed_state(&self, t: f64) -> BodyState {
+        let translate = |v: f64, gamma: f64, theta: f64, omega: f64| BodyState {
+            x: v * gamma.cos() * t,
+            y: v * gamma.sin() * t,
+            theta,
+            xdot: v * gamma.cos(),
+            ydot: v * gamma.sin(),
+            omega,
+        };
+        match *self {
+            Case::Static { alpha, kick } => {
+                let (theta, omega) = if t < 1.0 {
+                    let s = (PI * t).sin();
+                    (alpha + kick * s * s, kick * PI * (2.0 * PI * t).sin())
+                } else {
+                    (alpha, 0.0)
+                };
+                translate(1.0, 0.0, theta, omega)
+            }
+            Case::Forced { omega, spinup } => {
+                let (theta, rate) = if t < spinup {
+                    (0.5 * omega / spinup * t * t, omega * t / spinup)
+                } else {
+                    (0.5 * omega * spinup + omega * (t - spinup), omega)
+                };
+                translate(1.0, 0.0, theta, rate)
+            }
+            Case::Pinned { alpha0, .. } => translate(1.0, 0.0, alpha0, 0.0),
+            Case::Free {
+                v0, gamma0, alpha0, ..
+            } => translate(v0, gamma0, gamma0 + alpha0, 0.0),
+        }
+    }
+}
