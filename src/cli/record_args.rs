@@ -352,6 +352,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "viewer")]
     fn defaults_resolve() {
         let dir = std::env::temp_dir().join(format!("pf-opt-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
@@ -368,6 +369,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "viewer")]
     fn bad_values_are_refused_with_one_line() {
         let cases: &[(&[&str], &str)] = &[
             (&["--field-every", "0"], "--field-every 0"),
@@ -396,6 +398,7 @@ mod tests {
     }
 
     #[test]
+    #[cfg(feature = "viewer")]
     fn busy_port_is_detected() {
         let l = TcpListener::bind("127.0.0.1:0").unwrap();
         let port = l.local_addr().unwrap().port().to_string();
@@ -403,5 +406,20 @@ mod tests {
         a.no_save = true;
         let e = a.resolve("free", 1.0).unwrap_err().to_string();
         assert!(e.starts_with(&format!("--port {port}")), "{e}");
+    }
+
+    #[test]
+    #[cfg(not(feature = "viewer"))]
+    fn sinks_are_refused_without_the_viewer_feature() {
+        for (argv, flag) in [
+            (&[][..], "--save"),
+            (&["--no-save", "--serve"][..], "--serve"),
+            (&["--no-save", "--spawn"][..], "--spawn"),
+        ] {
+            let e = args(argv).resolve("free", 1.0).unwrap_err().to_string();
+            assert!(e.starts_with(flag) && e.contains("viewer"), "{argv:?}: {e}");
+        }
+        let o = args(&["--no-save"]).resolve("free", 1.0).unwrap();
+        assert!(!o.has_rerun_sink());
     }
 }

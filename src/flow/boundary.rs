@@ -163,39 +163,51 @@ fn outer_faces<'a>(
     nx: isize,
     ny: isize,
 ) -> impl Iterator<Item = OuterFace> + 'a {
-    let (wl, wr) = (m.x.width(0), m.x.width(nx - 1));
-    let (wb, wt) = (m.y.width(0), m.y.width(ny - 1));
-    let u_faces = (0..ny).flat_map(move |j| {
-        let (g, len) = (frame.gx(m.y.centre(j)), m.y.width(j));
-        [(0, 1, -1.0, wl), (nx, nx - 1, 1.0, wr)]
-            .into_iter()
-            .map(move |(i, inner, sign, gap)| OuterFace {
-                c: Component::U,
-                i,
-                j,
-                inner: (inner, j),
-                sign,
-                g,
-                len,
-                gap,
-            })
+    let u_ends = [
+        (0, 1, -1.0, m.x.width(0)),
+        (nx, nx - 1, 1.0, m.x.width(nx - 1)),
+    ];
+    let v_ends = [
+        (0, 1, -1.0, m.y.width(0)),
+        (ny, ny - 1, 1.0, m.y.width(ny - 1)),
+    ];
+    let u_faces = side_faces(Component::U, ny, u_ends, move |j| {
+        (frame.gx(m.y.centre(j)), m.y.width(j))
     });
-    let v_faces = (0..nx).flat_map(move |i| {
-        let (g, len) = (frame.gy(m.x.centre(i)), m.x.width(i));
-        [(0, 1, -1.0, wb), (ny, ny - 1, 1.0, wt)]
-            .into_iter()
-            .map(move |(j, inner, sign, gap)| OuterFace {
-                c: Component::V,
-                i,
-                j,
-                inner: (i, inner),
-                sign,
-                g,
-                len,
-                gap,
-            })
+    let v_faces = side_faces(Component::V, nx, v_ends, move |i| {
+        (frame.gy(m.x.centre(i)), m.x.width(i))
     });
     u_faces.chain(v_faces)
+}
+
+/// The boundary faces of one component: for each line (a row for u, a column for v) with its
+/// normal grid velocity and length from `line`, the two `ends` (index, inner index, outward sign,
+/// gap to the inner face).
+fn side_faces<'a>(
+    c: Component,
+    lines: isize,
+    ends: [(isize, isize, f64, f64); 2],
+    line: impl Fn(isize) -> (f64, f64) + 'a,
+) -> impl Iterator<Item = OuterFace> + 'a {
+    (0..lines).flat_map(move |l| {
+        let (g, len) = line(l);
+        ends.into_iter().map(move |(k, inner, sign, gap)| {
+            let (i, j, inner) = match c {
+                Component::U => (k, l, (inner, l)),
+                Component::V => (l, k, (l, inner)),
+            };
+            OuterFace {
+                c,
+                i,
+                j,
+                inner,
+                sign,
+                g,
+                len,
+                gap,
+            }
+        })
+    })
 }
 
 /// Sets the normal velocity on every outer boundary face for the new time level t (state after the

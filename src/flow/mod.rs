@@ -83,8 +83,7 @@ pub struct FlowSolver {
     pressure: Pressure,
     outer: OuterBc,
     forcing: Option<ForceFn>,
-    wall_u: Vec<plate::WallFace>,
-    wall_v: Vec<plate::WallFace>,
+    wall: plate::WallFaces,
     /// Motion of the plate at the current time level.
     pub frame: Frame,
     /// Current time and the last step taken (0 before the first step).
@@ -109,7 +108,7 @@ impl FlowSolver {
         let metrics = Metrics::new(&grid);
         let pressure = Pressure::new(&grid, &metrics).map_err(|e| FlowError::Setup(e.0))?;
         let nu = 1.0 / params.re;
-        let (wall_u, wall_v) = plate::wall_faces(&grid, &metrics, nu);
+        let wall = plate::wall_faces(&grid, &metrics, nu);
         let min_dx = grid.dx.iter().copied().fold(f64::INFINITY, f64::min);
         let min_dy = grid.dy.iter().copied().fold(f64::INFINITY, f64::min);
         let dt_visc =
@@ -126,8 +125,7 @@ impl FlowSolver {
             pressure,
             outer,
             forcing: None,
-            wall_u,
-            wall_v,
+            wall,
             frame,
             t: 0.0,
             dt_prev: 0.0,
@@ -140,7 +138,7 @@ impl FlowSolver {
             params,
             metrics,
         };
-        plate::set_plate_faces(&mut s.u, &mut s.v, &s.grid, &s.metrics, &s.frame);
+        s.impose_plate();
         Ok(s)
     }
 
@@ -160,13 +158,7 @@ impl FlowSolver {
         m.for_faces(Component::V, 0..nx, 0..ny + 1, |i, j, x, y| {
             v.set(i, j, f(x, y).1)
         });
-        plate::set_plate_faces(
-            &mut self.u,
-            &mut self.v,
-            &self.grid,
-            &self.metrics,
-            &self.frame,
-        );
+        self.impose_plate();
     }
 
     /// Phase 1 of a step (see the module docs). Returns the largest stable Δt: the convective limit
@@ -191,9 +183,7 @@ impl FlowSolver {
             &mut self.hv,
         );
         self.convective_rate = stats.convective_rate;
-        plate::apply_wall_faces(
-            &self.wall_u,
-            &self.wall_v,
+        self.wall.apply(
             &self.u,
             &self.v,
             &self.metrics,
@@ -235,13 +225,7 @@ impl FlowSolver {
         self.predict(dt);
         let t_next = self.t + dt;
         self.frame = next;
-        plate::set_plate_faces(
-            &mut self.u,
-            &mut self.v,
-            &self.grid,
-            &self.metrics,
-            &self.frame,
-        );
+        self.impose_plate();
         boundary::set_outer_normals(
             &mut self.u,
             &mut self.v,
@@ -305,6 +289,17 @@ impl FlowSolver {
             return Err(self.diverged("the force on the plate is not finite"));
         }
         Ok(())
+    }
+
+    /// No-slip: the faces on and inside the plate take the grid-point velocity g of this frame.
+    fn impose_plate(&mut self) {
+        plate::set_plate_faces(
+            &mut self.u,
+            &mut self.v,
+            &self.grid,
+            &self.metrics,
+            &self.frame,
+        );
     }
 
     fn diverged(&self, reason: &str) -> FlowError {

@@ -34,60 +34,84 @@ pub struct WallFace {
 }
 
 /// Near-wall corrections for u (faces above/below the plate) and v (faces beside its ends).
-pub fn wall_faces(grid: &Grid, m: &Metrics, nu: f64) -> (Vec<WallFace>, Vec<WallFace>) {
-    let mut wu = Vec::new();
-    // u-faces strictly between the plate ends, one row above and one below.
-    for i in grid.i0 + 1..grid.i1 {
-        for (j, d) in [
-            (grid.j1 as isize, m.y.centre_gap(grid.j1 as isize)),
-            (grid.j0 as isize - 1, m.y.centre_gap(grid.j0 as isize)),
-        ] {
-            let cv = m.y.width(j);
-            wu.push(WallFace {
-                i: i as isize,
-                j,
-                coef: -nu / (d * cv),
-            });
-        }
-    }
-    let mut wv = Vec::new();
-    // v-faces strictly between the plate faces, one column right and one left of the ends.
-    for j in grid.j0 + 1..grid.j1 {
-        for (i, d) in [
-            (grid.i1 as isize, m.x.centre_gap(grid.i1 as isize)),
-            (grid.i0 as isize - 1, m.x.centre_gap(grid.i0 as isize)),
-        ] {
-            let cv = m.x.width(i);
-            wv.push(WallFace {
-                i,
-                j: j as isize,
-                coef: -nu / (d * cv),
-            });
-        }
-    }
-    (wu, wv)
+pub fn wall_faces(grid: &Grid, m: &Metrics, nu: f64) -> WallFaces {
+    let (i0, i1, j0, j1) = (
+        grid.i0 as isize,
+        grid.i1 as isize,
+        grid.j0 as isize,
+        grid.j1 as isize,
+    );
+    // u-faces strictly between the plate ends, one row above and one below; v-faces strictly
+    // between the plate faces, one column right and one left of the ends.
+    let u = beside_wall(
+        i0 + 1..i1,
+        [j1, j0 - 1],
+        |j| m.y.width(j),
+        |k| m.y.centre_gap(k),
+        nu,
+    )
+    .map(|(i, j, coef)| WallFace { i, j, coef })
+    .collect();
+    let v = beside_wall(
+        j0 + 1..j1,
+        [i1, i0 - 1],
+        |i| m.x.width(i),
+        |k| m.x.centre_gap(k),
+        nu,
+    )
+    .map(|(j, i, coef)| WallFace { i, j, coef })
+    .collect();
+    WallFaces { u, v }
 }
 
-/// Adds the near-wall correction to the explicit right-hand sides.
-pub fn apply_wall_faces(
-    wu: &[WallFace],
-    wv: &[WallFace],
-    u: &Padded,
-    v: &Padded,
-    m: &Metrics,
-    frame: &Frame,
-    hu: &mut Padded,
-    hv: &mut Padded,
-) {
-    for w in wu {
-        let rel = u.get(w.i, w.j) - frame.gx(m.y.centre(w.j));
-        let k = hu.at(w.i, w.j);
-        hu.data[k] += w.coef * rel;
+/// (along, across, coef) for the faces at positions `along` in the two lines `across` = [the
+/// line past the high wall, the line before the low wall]; the wall distance d is the centre gap
+/// at the wall and the control volume the width of the line.
+fn beside_wall(
+    along: std::ops::Range<isize>,
+    across: [isize; 2],
+    width: impl Fn(isize) -> f64,
+    gap: impl Fn(isize) -> f64,
+    nu: f64,
+) -> std::vec::IntoIter<(isize, isize, f64)> {
+    let walls = [(across[0], across[0]), (across[1], across[1] + 1)];
+    let mut out = Vec::new();
+    for a in along {
+        for (line, wall) in walls {
+            out.push((a, line, -nu / (gap(wall) * width(line))));
+        }
     }
-    for w in wv {
-        let rel = v.get(w.i, w.j) - frame.gy(m.x.centre(w.i));
-        let k = hv.at(w.i, w.j);
-        hv.data[k] += w.coef * rel;
+    out.into_iter()
+}
+
+/// The near-wall corrections of u (faces above/below the plate) and v (faces beside its ends).
+#[derive(Clone, Debug, Default)]
+pub struct WallFaces {
+    pub u: Vec<WallFace>,
+    pub v: Vec<WallFace>,
+}
+
+impl WallFaces {
+    /// Adds the near-wall correction to the explicit right-hand sides.
+    pub fn apply(
+        &self,
+        u: &Padded,
+        v: &Padded,
+        m: &Metrics,
+        frame: &Frame,
+        hu: &mut Padded,
+        hv: &mut Padded,
+    ) {
+        for w in &self.u {
+            let rel = u.get(w.i, w.j) - frame.gx(m.y.centre(w.j));
+            let k = hu.at(w.i, w.j);
+            hu.data[k] += w.coef * rel;
+        }
+        for w in &self.v {
+            let rel = v.get(w.i, w.j) - frame.gy(m.x.centre(w.i));
+            let k = hv.at(w.i, w.j);
+            hv.data[k] += w.coef * rel;
+        }
     }
 }
 

@@ -12,148 +12,205 @@ const NONE: u32 = u32::MAX;
 /// Each polyline is a maximal chain of crossing points; lines ending at the grid boundary (or at
 /// a skipped cell) are open, the others are closed loops.
 pub fn isolines(values: &[f64], xs: &[f64], ys: &[f64], levels: &[f64]) -> Vec<(usize, Polyline)> {
-    let (nx, ny) = (xs.len(), ys.len());
     assert_eq!(
         values.len(),
-        nx * ny,
+        xs.len() * ys.len(),
         "isolines: values do not match the grid"
     );
     let mut out = Vec::new();
-    if nx < 2 || ny < 2 {
+    if xs.len() < 2 || ys.len() < 2 {
         return out;
     }
-    let n_h = (nx - 1) * ny; // horizontal edges (i,j)-(i+1,j)
-    let n_edges = n_h + nx * (ny - 1); // + vertical edges (i,j)-(i,j+1)
-    let h_id = |i: usize, j: usize| (i + (nx - 1) * j) as u32;
-    let v_id = |i: usize, j: usize| (n_h + i + nx * j) as u32;
-    let val = |i: usize, j: usize| values[i + nx * j];
-
-    // Edge -> up to two neighbouring edges (the segments through it), reused across levels.
-    let mut nbr: Vec<[u32; 2]> = vec![[NONE, NONE]; n_edges];
-    let mut visited: Vec<bool> = vec![false; n_edges];
-    let mut touched: Vec<u32> = Vec::new();
-
+    let mut graph = EdgeGraph::new(values, xs, ys);
     for (li, &level) in levels.iter().enumerate() {
-        if !level.is_finite() {
-            continue;
+        if level.is_finite() {
+            graph.link_cells(level);
+            out.extend(graph.lines(level).into_iter().map(|l| (li, l)));
+            graph.reset();
         }
-        touched.clear();
-        let mut link = |a: u32, b: u32, touched: &mut Vec<u32>| {
-            for (e, other) in [(a, b), (b, a)] {
-                let slot = &mut nbr[e as usize];
-                if slot[0] == NONE {
-                    slot[0] = other;
-                    touched.push(e);
-                } else if slot[1] == NONE {
-                    slot[1] = other;
-                }
-            }
-        };
-        for j in 0..ny - 1 {
-            for i in 0..nx - 1 {
-                let c = [val(i, j), val(i + 1, j), val(i + 1, j + 1), val(i, j + 1)];
-                if c.iter().any(|v| v.is_nan()) {
-                    continue;
-                }
-                let above = c.map(|v| v >= level);
-                let case = above
-                    .iter()
-                    .enumerate()
-                    .fold(0u8, |acc, (k, &a)| acc | ((a as u8) << k));
-                if case == 0 || case == 15 {
-                    continue;
-                }
-                // Edges: 0 bottom, 1 right, 2 top, 3 left; edge k joins corners k and k+1.
-                let edges = [h_id(i, j), v_id(i + 1, j), h_id(i, j + 1), v_id(i, j)];
-                let crossing: Vec<usize> =
-                    (0..4).filter(|&k| above[k] != above[(k + 1) % 4]).collect();
-                if crossing.len() == 2 {
-                    link(edges[crossing[0]], edges[crossing[1]], &mut touched);
-                } else {
-                    // Saddle: corners 0 and 2 on one side, 1 and 3 on the other.
-                    let centre_above = 0.25 * (c[0] + c[1] + c[2] + c[3]) >= level;
-                    // Cut off the two corners that are on the other side from the centre.
-                    if centre_above == above[0] {
-                        // centre joins corners 0 and 2: cut off corners 1 and 3.
-                        link(edges[0], edges[1], &mut touched);
-                        link(edges[2], edges[3], &mut touched);
-                    } else {
-                        // cut off corners 0 and 2.
-                        link(edges[3], edges[0], &mut touched);
-                        link(edges[1], edges[2], &mut touched);
-                    }
-                }
-            }
-        }
-
-        let point = |e: u32| -> [f64; 2] {
-            let e = e as usize;
-            if e < n_h {
-                let (i, j) = (e % (nx - 1), e / (nx - 1));
-                let (a, b) = (val(i, j), val(i + 1, j));
-                let t = ((level - a) / (b - a)).clamp(0.0, 1.0);
-                [xs[i] + t * (xs[i + 1] - xs[i]), ys[j]]
-            } else {
-                let e = e - n_h;
-                let (i, j) = (e % nx, e / nx);
-                let (a, b) = (val(i, j), val(i, j + 1));
-                let t = ((level - a) / (b - a)).clamp(0.0, 1.0);
-                [xs[i], ys[j] + t * (ys[j + 1] - ys[j])]
-            }
-        };
-
-        let walk = |start: u32, visited: &mut Vec<bool>| -> Polyline {
-            let mut line = vec![point(start)];
-            visited[start as usize] = true;
-            let mut prev = NONE;
-            let mut cur = start;
-            loop {
-                let [a, b] = nbr[cur as usize];
-                let next = if a != NONE && a != prev && !visited[a as usize] {
-                    a
-                } else if b != NONE && b != prev && !visited[b as usize] {
-                    b
-                } else {
-                    // Closed loop: back at the start?
-                    if (a == start || b == start) && prev != NONE && line.len() > 2 {
-                        line.push(line[0]);
-                    }
-                    break;
-                };
-                visited[next as usize] = true;
-                line.push(point(next));
-                prev = cur;
-                cur = next;
-            }
-            line
-        };
-
-        // Open lines first (start at an end: one neighbour), then the closed loops.
-        for &e in &touched {
-            let [_, b] = nbr[e as usize];
-            if b == NONE && !visited[e as usize] {
-                let line = walk(e, &mut visited);
-                if line.len() >= 2 {
-                    out.push((li, line));
-                }
-            }
-        }
-        for &e in &touched {
-            if !visited[e as usize] {
-                let line = walk(e, &mut visited);
-                if line.len() >= 2 {
-                    out.push((li, line));
-                }
-            }
-        }
-        for &e in &touched {
-            nbr[e as usize] = [NONE, NONE];
-            visited[e as usize] = false;
-        }
-        // Edges linked only as the second neighbour of someone are in `touched` too (each link
-        // touches both ends), so the reset above is complete.
     }
     out
+}
+
+/// The cell edges a level crosses, each linked to the (at most two) edges it joins through the
+/// neighbouring cells; reused across levels.
+struct EdgeGraph<'a> {
+    values: &'a [f64],
+    xs: &'a [f64],
+    ys: &'a [f64],
+    nx: usize,
+    ny: usize,
+    /// Number of horizontal edges (i,j)-(i+1,j); vertical edges (i,j)-(i,j+1) follow them.
+    n_h: usize,
+    nbr: Vec<[u32; 2]>,
+    visited: Vec<bool>,
+    /// Edges linked for the current level (to reset).
+    touched: Vec<u32>,
+}
+
+impl<'a> EdgeGraph<'a> {
+    fn new(values: &'a [f64], xs: &'a [f64], ys: &'a [f64]) -> Self {
+        let (nx, ny) = (xs.len(), ys.len());
+        let n_h = (nx - 1) * ny;
+        let n_edges = n_h + nx * (ny - 1);
+        EdgeGraph {
+            values,
+            xs,
+            ys,
+            nx,
+            ny,
+            n_h,
+            nbr: vec![[NONE, NONE]; n_edges],
+            visited: vec![false; n_edges],
+            touched: Vec::new(),
+        }
+    }
+
+    fn h_id(&self, i: usize, j: usize) -> u32 {
+        (i + (self.nx - 1) * j) as u32
+    }
+    fn v_id(&self, i: usize, j: usize) -> u32 {
+        (self.n_h + i + self.nx * j) as u32
+    }
+    fn val(&self, i: usize, j: usize) -> f64 {
+        self.values[i + self.nx * j]
+    }
+
+    /// Joins edges a and b (a segment of the iso-line through one cell).
+    fn link(&mut self, a: u32, b: u32) {
+        for (e, other) in [(a, b), (b, a)] {
+            let slot = &mut self.nbr[e as usize];
+            if slot[0] == NONE {
+                slot[0] = other;
+                self.touched.push(e);
+            } else if slot[1] == NONE {
+                slot[1] = other;
+            }
+        }
+    }
+
+    /// Marching squares over every cell for one level.
+    fn link_cells(&mut self, level: f64) {
+        for j in 0..self.ny - 1 {
+            for i in 0..self.nx - 1 {
+                self.link_cell(i, j, level);
+            }
+        }
+    }
+
+    fn link_cell(&mut self, i: usize, j: usize, level: f64) {
+        let c = [
+            self.val(i, j),
+            self.val(i + 1, j),
+            self.val(i + 1, j + 1),
+            self.val(i, j + 1),
+        ];
+        if c.iter().any(|v| v.is_nan()) {
+            return;
+        }
+        let above = c.map(|v| v >= level);
+        if above.iter().all(|&a| a) || above.iter().all(|&a| !a) {
+            return;
+        }
+        // Edges: 0 bottom, 1 right, 2 top, 3 left; edge k joins corners k and k+1.
+        let edges = [
+            self.h_id(i, j),
+            self.v_id(i + 1, j),
+            self.h_id(i, j + 1),
+            self.v_id(i, j),
+        ];
+        let mut crossing = (0..4).filter(|&k| above[k] != above[(k + 1) % 4]);
+        let (first, second) = (crossing.next(), crossing.next());
+        if crossing.next().is_none() {
+            if let (Some(a), Some(b)) = (first, second) {
+                self.link(edges[a], edges[b]);
+            }
+            return;
+        }
+        // Saddle: corners 0 and 2 on one side, 1 and 3 on the other. Cut off the two corners
+        // that lie on the other side from the centre.
+        let centre_above = 0.25 * (c[0] + c[1] + c[2] + c[3]) >= level;
+        if centre_above == above[0] {
+            self.link(edges[0], edges[1]);
+            self.link(edges[2], edges[3]);
+        } else {
+            self.link(edges[3], edges[0]);
+            self.link(edges[1], edges[2]);
+        }
+    }
+
+    /// Where the level crosses edge e (linear interpolation along it).
+    fn point(&self, e: u32, level: f64) -> [f64; 2] {
+        let (xs, ys) = (self.xs, self.ys);
+        let e = e as usize;
+        if e < self.n_h {
+            let (i, j) = (e % (self.nx - 1), e / (self.nx - 1));
+            let (a, b) = (self.val(i, j), self.val(i + 1, j));
+            let t = ((level - a) / (b - a)).clamp(0.0, 1.0);
+            [xs[i] + t * (xs[i + 1] - xs[i]), ys[j]]
+        } else {
+            let e = e - self.n_h;
+            let (i, j) = (e % self.nx, e / self.nx);
+            let (a, b) = (self.val(i, j), self.val(i, j + 1));
+            let t = ((level - a) / (b - a)).clamp(0.0, 1.0);
+            [xs[i], ys[j] + t * (ys[j + 1] - ys[j])]
+        }
+    }
+
+    /// The chain of edges from `start`, closed if it comes back to it.
+    fn walk(&mut self, start: u32, level: f64) -> Polyline {
+        let mut line = vec![self.point(start, level)];
+        self.visited[start as usize] = true;
+        let (mut prev, mut cur) = (NONE, start);
+        loop {
+            let [a, b] = self.nbr[cur as usize];
+            let free = |e: u32| e != NONE && e != prev && !self.visited[e as usize];
+            let next = if free(a) {
+                a
+            } else if free(b) {
+                b
+            } else {
+                if (a == start || b == start) && prev != NONE && line.len() > 2 {
+                    line.push(line[0]);
+                }
+                break;
+            };
+            self.visited[next as usize] = true;
+            line.push(self.point(next, level));
+            prev = cur;
+            cur = next;
+        }
+        line
+    }
+
+    /// The polylines of the linked level: open lines first (they start at an end, with one
+    /// neighbour), then the closed loops.
+    fn lines(&mut self, level: f64) -> Vec<Polyline> {
+        let mut out = Vec::new();
+        for pass in [true, false] {
+            for k in 0..self.touched.len() {
+                let e = self.touched[k];
+                let is_end = self.nbr[e as usize][1] == NONE;
+                if (!pass || is_end) && !self.visited[e as usize] {
+                    let line = self.walk(e, level);
+                    if line.len() >= 2 {
+                        out.push(line);
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// Clears the links of the last level. Every linked edge is in `touched` (each link touches
+    /// both of its ends), so the reset is complete.
+    fn reset(&mut self) {
+        for &e in &self.touched {
+            self.nbr[e as usize] = [NONE, NONE];
+            self.visited[e as usize] = false;
+        }
+        self.touched.clear();
+    }
 }
 
 /// Ramer–Douglas–Peucker simplification: drops points closer than `tolerance` to the chord of

@@ -61,7 +61,7 @@ enum Motion {
     Prescribed,
     /// Held on a formula until the release, then integrated (cases C, D).
     Coupled {
-        body: RigidBody,
+        body: Box<RigidBody>,
         dof: Dof,
         released: bool,
     },
@@ -96,7 +96,7 @@ impl Simulation {
                 };
                 let body = RigidBody::new(b.props, Dof::Prescribed, state, b.ab_order, b.ab_start)?;
                 Motion::Coupled {
-                    body,
+                    body: Box::new(body),
                     dof,
                     released: false,
                 }

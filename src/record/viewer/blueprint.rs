@@ -17,7 +17,7 @@ use rerun::blueprint::{
     TimePanel, TimeSeriesView, Vertical,
 };
 
-use super::scene::paths;
+use super::layout::paths;
 
 fn flow_view(name: &str, field: &str) -> Spatial2DView {
     let mut contents = vec![

@@ -2,8 +2,13 @@
 //! `--serve`, `--connect`, `--spawn`), the scene (entities, documented in `record/mod.rs`) and the
 //! default blueprint. The logger thread drives a [`Viewer`] and knows nothing of Rerun.
 mod blueprint;
+mod curves;
+mod images;
+mod layout;
 mod scene;
 mod sinks;
+mod statics;
+mod text;
 
 use std::path::PathBuf;
 use std::str::FromStr as _;
@@ -17,7 +22,7 @@ use rerun::RecordingStream;
 use super::messages::{RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use crate::sim::{FieldSnapshot, StepSample};
-pub use scene::paths;
+pub use layout::paths;
 use scene::Scene;
 use sinks::{open_sinks, ConnectStats};
 

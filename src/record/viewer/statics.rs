@@ -1,0 +1,152 @@
+//! The static parts of a recording: screen frames, the plate, colour scales, series styles, the
+//! axes of the α plots and the run configuration.
+use rerun::components::{MagnificationFilter, Radius};
+use rerun::{
+    Color, DepthImage, LineStrips2D, Points2D, RecordingStream, RecordingStreamResult, SeriesLines,
+    TextDocument, Transform3D,
+};
+
+use super::curves::plate_outline;
+use super::layout::{paths, ALPHA_SCALE, FIELD_SCALES, SERIES};
+use super::text::config_markdown;
+use crate::post::{FieldWindow, ImageGrid};
+use crate::record::messages::RunInfo;
+use crate::record::options::RecordOptions;
+
+/// Logs everything that does not change during the run.
+pub(super) fn log_static(
+    rec: &RecordingStream,
+    info: &RunInfo,
+    opts: &RecordOptions,
+    img: &ImageGrid,
+) -> RecordingStreamResult<()> {
+    log_screen_frames(rec)?;
+    log_plate(rec, info.thickness, &opts.field_window)?;
+    log_field_styles(rec, img)?;
+    for (path, name, color) in SERIES {
+        let style = SeriesLines::new()
+            .with_names([name])
+            .with_colors([Color::from_u32(color)]);
+        rec.log_static(path, &style)?;
+    }
+    log_polar_axes(rec)?;
+    rec.log_static(
+        paths::CONFIG,
+        &TextDocument::from_markdown(config_markdown(info, opts, img)),
+    )?;
+    rec.log_static(
+        paths::SUMMARY,
+        &TextDocument::from_markdown(
+            "# Summary\n\nThe run is in progress; the summary appears here when it ends.",
+        ),
+    )
+}
+
+/// The 2D view draws +y downwards, so the views look through frames that mirror Y once.
+fn log_screen_frames(rec: &RecordingStream) -> RecordingStreamResult<()> {
+    let mirror = Transform3D::from_scale([1.0, -1.0, 1.0]);
+    rec.log_static(paths::WORLD_SCREEN, &mirror)?;
+    rec.log_static(paths::POLAR_SCREEN, &mirror)?;
+    rec.log_static(
+        paths::FOLLOW,
+        &Transform3D::from_translation_scale([0.0, 0.0, 0.0], [1.0, -1.0, 1.0]),
+    )
+}
+
+/// The plate's outline (constant on-screen width, visible when zoomed out) with a fill of its
+/// true thickness, and a faint circle swept by the image window's corners that keeps the flow
+/// views' bounds steady while the window turns with the plate.
+fn log_plate(rec: &RecordingStream, thickness: f64, w: &FieldWindow) -> RecordingStreamResult<()> {
+    let h = (0.5 * thickness) as f32;
+    rec.log_static(
+        paths::OUTLINE,
+        &LineStrips2D::new([plate_outline(thickness), vec![[-0.5, 0.0], [0.5, 0.0]]])
+            .with_colors([Color::from_rgb(255, 255, 255)])
+            .with_radii([Radius::new_ui_points(1.5), Radius::new_scene_units(h)])
+            .with_draw_order(50.0),
+    )?;
+    let reach = [
+        w.x0.hypot(w.y0),
+        w.x0.hypot(w.y1),
+        w.x1.hypot(w.y0),
+        w.x1.hypot(w.y1),
+    ]
+    .into_iter()
+    .fold(0.0f64, f64::max) as f32;
+    let circle: Vec<[f32; 2]> = (0..=128)
+        .map(|k| {
+            let a = k as f32 / 128.0 * std::f32::consts::TAU;
+            [reach * a.cos(), reach * a.sin()]
+        })
+        .collect();
+    rec.log_static(
+        paths::REACH,
+        &LineStrips2D::new([circle])
+            .with_colors([Color::from_unmultiplied_rgba(255, 255, 255, 40)])
+            .with_radii([Radius::new_ui_points(0.5)]),
+    )
+}
+
+/// Each field image: its placement in body coordinates and its fixed colour scale.
+fn log_field_styles(rec: &RecordingStream, img: &ImageGrid) -> RecordingStreamResult<()> {
+    for (name, colormap, lo, hi) in FIELD_SCALES {
+        let path = format!("{}/{name}", paths::PLATE);
+        rec.log_static(
+            path.as_str(),
+            &Transform3D::from_translation_scale(
+                [img.window.x0 as f32, img.window.y0 as f32, 0.0],
+                [img.dx() as f32, img.dy() as f32, 1.0],
+            ),
+        )?;
+        rec.log_static(
+            path.as_str(),
+            &DepthImage::update_fields()
+                .with_colormap(colormap)
+                .with_depth_range([lo, hi])
+                .with_magnification_filter(MagnificationFilter::Linear)
+                .with_meter(1.0),
+        )?;
+    }
+    Ok(())
+}
+
+/// Axes of the α plots: x = ALPHA_SCALE·α over [−π, π] (ticks every π/2), y = value (ticks every
+/// 1, labels every 2).
+fn log_polar_axes(rec: &RecordingStream) -> RecordingStreamResult<()> {
+    let pi = std::f32::consts::PI;
+    let ax = ALPHA_SCALE as f32;
+    let mut axes = vec![
+        vec![[-ax * pi, 0.0], [ax * pi, 0.0]],
+        vec![[0.0, -6.0], [0.0, 6.0]],
+    ];
+    for k in [-2.0f32, -1.0, 1.0, 2.0] {
+        axes.push(vec![[ax * k * pi / 2.0, -0.1], [ax * k * pi / 2.0, 0.1]]);
+    }
+    for k in (-6..=6).filter(|k| *k != 0) {
+        axes.push(vec![[-0.1, k as f32], [0.1, k as f32]]);
+    }
+    rec.log_static(
+        paths::POLAR_AXES,
+        &LineStrips2D::new(axes)
+            .with_colors([Color::from_rgb(140, 140, 140)])
+            .with_radii([Radius::new_ui_points(0.6)]),
+    )?;
+    let mut label_pos = vec![
+        [ax * pi, 0.0],
+        [ax * pi / 2.0, 0.0],
+        [-ax * pi / 2.0, 0.0],
+        [-ax * pi, 0.0],
+    ];
+    let mut labels: Vec<String> = ["α = π", "π/2", "−π/2", "−π"].map(String::from).to_vec();
+    for k in [-6, -4, -2, 2, 4, 6] {
+        label_pos.push([0.0, k as f32]);
+        labels.push(k.to_string());
+    }
+    rec.log_static(
+        format!("{}/labels", paths::POLAR_AXES),
+        &Points2D::new(label_pos)
+            .with_labels(labels)
+            .with_radii([Radius::new_ui_points(1.0)])
+            .with_colors([Color::from_rgb(140, 140, 140)]),
+    )
+}
