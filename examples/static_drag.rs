@@ -1,25 +1,14 @@
 //! A static plate at α = 0.4 run from Rust: describe the run, step it to the end, print C_D.
 use platefall::grid::GridSpec;
-use platefall::sim::{Case, RunConfig, Simulation, TimeControl};
+use platefall::sim::{Case, RunConfig, Simulation};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let time = TimeControl {
-        t_end: 10.0,
-        turns: None,
-        dt_max: 0.01,
-        cc: 0.005,
-    };
     let case = Case::Static {
         alpha: 0.4,
         kick: 0.0,
     };
-    let config = RunConfig {
-        case,
-        grid: GridSpec::modern(16),
-        flow: Default::default(),
-        body: None,
-        time,
-    };
+    let mut config = RunConfig::new(case, GridSpec::modern(16));
+    config.time.t_end = 10.0;
     let mut sim = Simulation::new(config)?;
     while !sim.finished() {
         sim.step()?;

@@ -5,10 +5,12 @@
 //!
 //! The physics core: no I/O and no clock. Results go to an [`Observer`], step by step.
 //!
-//! ```no_run
+//! ```
+//! use platefall::grid::GridSpec;
 //! use platefall::sim::{Case, RunConfig, Simulation};
-//! # fn config() -> RunConfig { unimplemented!() }
-//! let mut sim = Simulation::new(config())?;
+//! let mut config = RunConfig::new(Case::Static { alpha: 0.4, kick: 0.0 }, GridSpec::modern(8));
+//! config.time.t_end = 0.05;
+//! let mut sim = Simulation::new(config)?;
 //! while !sim.finished() {
 //!     let sample = sim.step()?;
 //!     println!("t = {:.3}  C_D = {:.3}", sample.t, sample.cd);

@@ -34,6 +34,18 @@ pub struct TimeControl {
     pub cc: f64,
 }
 
+impl Default for TimeControl {
+    /// 80 convective times, no turn limit, the seed's ceiling Δt ≤ 0.01 and rotation rule 0.005.
+    fn default() -> Self {
+        TimeControl {
+            t_end: 80.0,
+            turns: None,
+            dt_max: 0.01,
+            cc: 0.005,
+        }
+    }
+}
+
 /// Everything that defines a run; serialised into the recording and the summary.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RunConfig {
@@ -48,6 +60,18 @@ pub struct RunConfig {
 }
 
 impl RunConfig {
+    /// A prescribed-motion run (static or forced) on `grid` with the default fluid (Re 5000) and
+    /// numerics and the default [`TimeControl`]; set `body` for a coupled case.
+    pub fn new(case: Case, grid: GridSpec) -> RunConfig {
+        RunConfig {
+            case,
+            grid,
+            flow: FlowParams::default(),
+            body: None,
+            time: TimeControl::default(),
+        }
+    }
+
     /// Validates every value; the first bad one is reported.
     pub fn validate(&self) -> Result<(), InputError> {
         self.grid.validate()?;
