@@ -39,6 +39,9 @@ pub enum Command {
     Free(FreeArgs),
     /// Time the flow step alone on several grid sizes (ns per cell per step, momentum vs pressure).
     Bench(BenchArgs),
+    /// Run a parameter sweep from a plan file, locally or as a Slurm job array, and merge it into
+    /// a results table and a phase diagram.
+    Sweep(crate::sweep::SweepArgs),
 }
 
 /// Options shared by every case.
@@ -346,6 +349,7 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ConfigError> {
             )
         }
         Command::Bench(_) => return Err(ConfigError("bench has no run configuration".into())),
+        Command::Sweep(_) => return Err(ConfigError("sweep has no run configuration".into())),
     };
     cfg.validate()?;
     Ok(cfg)

@@ -12,5 +12,6 @@ pub mod post;
 pub mod record;
 pub mod sim;
 pub mod summary;
+pub mod sweep;
 
 pub mod cli;

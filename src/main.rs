@@ -23,6 +23,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Bench(args) => bench(args).map(|_| ExitCode::SUCCESS),
+        Command::Sweep(args) => return platefall::sweep::main(args),
         cmd => run_case(cmd),
     };
     match result {
@@ -41,7 +42,7 @@ fn case_args(cmd: &Command) -> (&SolverArgs, &RecordArgs) {
         Command::Forced(a) => (&a.solver, &a.record),
         Command::Pinned(a) => (&a.solver, &a.record),
         Command::Free(a) => (&a.solver, &a.record),
-        Command::Bench(_) => unreachable!("bench is not a case"),
+        Command::Bench(_) | Command::Sweep(_) => unreachable!("not a case"),
     }
 }
 
