@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use super::args::{SweepAction, SweepArgs};
 use super::child::{finish, interrupt, is_done, launch};
-use super::layout::{lock, prepare, read_manifest, Layout, Manifest};
+use super::layout::{difference, lock, prepare, read_manifest, Layout, Manifest};
 use super::plan::{self, CaseSpec, Plan};
 use super::progress::Progress;
 use super::results::{gather, not_completed, tally, write_tables};
@@ -164,12 +164,15 @@ fn open_prepared(dir: &Path) -> Result<(Layout, Plan, Manifest), Failure> {
             layout.dir.display()
         ))
     })?;
-    let plan = plan::load(&layout.plan()).map_err(Failure::input)?;
-    if Manifest::of(&plan, &plan.cases()) != manifest {
+    let mut plan = plan::load(&layout.plan()).map_err(Failure::input)?;
+    if let Some(why) = difference(&manifest, &Manifest::of(&plan, &plan.cases())) {
         return Err(Failure::input(format!(
-            "{}: plan.toml does not match sweep.json (edited by hand?); restore it or rerun the sweep",
+            "{}: plan.toml does not match sweep.json ({why}); restore it or rerun the sweep",
             layout.dir.display()
         )));
+    }
+    if !manifest.name.is_empty() {
+        plan.name = manifest.name.clone();
     }
     Ok((layout, plan, manifest))
 }

@@ -60,6 +60,9 @@ impl Layout {
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
 pub struct Manifest {
     pub format: u32,
+    /// The plan's name (titles); not part of what makes two plans different.
+    #[serde(default)]
+    pub name: String,
     pub case: String,
     pub recording: bool,
     pub cases: Vec<CaseSpec>,
@@ -69,6 +72,7 @@ impl Manifest {
     pub fn of(plan: &Plan, cases: &[CaseSpec]) -> Manifest {
         Manifest {
             format: MANIFEST_FORMAT,
+            name: plan.name.clone(),
             case: plan.case.clone(),
             recording: plan.outputs.recording,
             cases: cases.to_vec(),
@@ -90,7 +94,7 @@ pub fn read_manifest(layout: &Layout) -> Result<Option<Manifest>, Failure> {
 }
 
 /// Why `new` is not the plan that made `old`, if it is not.
-fn difference(old: &Manifest, new: &Manifest) -> Option<String> {
+pub fn difference(old: &Manifest, new: &Manifest) -> Option<String> {
     if old.case != new.case {
         return Some(format!("case {} there, {} here", old.case, new.case));
     }

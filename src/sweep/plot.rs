@@ -134,7 +134,8 @@ fn chart_in<'a, DB: DrawingBackend>(
         .x_label_formatter(&x_fmt)
         .y_label_formatter(&y_fmt)
         .label_style((FONT, 13))
-        .axis_desc_style((FONT, 15));
+        .axis_desc_style((FONT, 15))
+        .light_line_style(RGBColor(242, 242, 242));
     if let Some(n) = x.categories.as_ref().map(Vec::len) {
         mesh.x_labels(n);
     }
@@ -156,12 +157,16 @@ fn chart_in<'a, DB: DrawingBackend>(
     Ok(chart)
 }
 
-/// The left panel: cases in the parameter plane coloured by regime.
+/// Width of the legend column beside the regime panel.
+const LEGEND_WIDTH: u32 = 170;
+
+/// The left panel: cases in the parameter plane coloured by regime, with a legend column.
 fn regime_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Result<(), String> {
+    let (plot_area, legend_area) = area.split_horizontally(area.dim_in_pixel().0 - LEGEND_WIDTH);
     let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
     let ys = span(data.y.as_ref(), data.points.iter().map(|p| p.y));
     let y = data.y.as_ref().map_or(YAxis::Strip, YAxis::Param);
-    let mut chart = chart_in(area, "motion regime", &data.x, y, xs, ys)?;
+    let mut chart = chart_in(&plot_area, "motion regime", &data.x, y, xs, ys)?;
     let mut keys: Vec<String> = REGIMES.iter().map(|(n, _)| n.to_string()).collect();
     for p in &data.points {
         let k = regime_key(p);
@@ -169,27 +174,30 @@ fn regime_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Resu
             keys.push(k);
         }
     }
+    let mut entries = Vec::new();
     for key in keys {
         let pts: Vec<&Point> = data.points.iter().filter(|p| regime_key(p) == key).collect();
         if pts.is_empty() {
             continue;
         }
-        let label = format!("{key} ({})", pts.len());
         let style = key_style(&key);
         chart
-            .draw_series(pts.iter().map(|p| point_element(&key, (p.x, p.y), style)))
-            .map_err(err)?
-            .label(label)
-            .legend(move |(x, y)| point_element(&style_name(style), (x, y), style));
+            .draw_series(pts.iter().map(|p| point_element((p.x, p.y), style)))
+            .map_err(err)?;
+        entries.push((format!("{key} ({})", pts.len()), style));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .label_font((FONT, 13))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK.mix(0.4))
-        .draw()
-        .map_err(err)
+    legend(&legend_area, &entries)
+}
+
+/// The legend: one marker and label per entry, from the top of its column.
+fn legend<DB: DrawingBackend>(area: &Area<DB>, entries: &[(String, Style)]) -> Result<(), String> {
+    for (i, (label, style)) in entries.iter().enumerate() {
+        let y = 70 + 24 * i as i32;
+        area.draw(&point_element((12, y), *style)).map_err(err)?;
+        area.draw(&Text::new(label.clone(), (26, y - 8), (FONT, 14).into_font()))
+            .map_err(err)?;
+    }
+    Ok(())
 }
 
 /// The marker kind and colour of a legend key.
@@ -208,17 +216,8 @@ fn key_style(key: &str) -> Style {
     }
 }
 
-fn style_name(s: Style) -> String {
-    match s {
-        Style::Filled(_) => "filled".into(),
-        Style::Cross => "cross".into(),
-        Style::Hollow => "hollow".into(),
-    }
-}
-
 /// One marker.
 fn point_element<C: Copy + 'static, DB: DrawingBackend>(
-    _key: &str,
     at: C,
     style: Style,
 ) -> DynElement<'static, DB, C> {
@@ -246,7 +245,7 @@ fn value_map_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> R
                 }
                 _ => Style::Hollow,
             };
-            point_element("", (p.x, p.y), style)
+            point_element((p.x, p.y), style)
         }))
         .map_err(err)?;
     colour_bar(&bar_area, range)

@@ -113,9 +113,18 @@ fn record(layout: &Layout, r: &Row, keys: &[String]) -> Object {
     out.push(("recording".into(), rec.map_or(Json::Null, Json::from)));
     for k in keys {
         let v = json::get(&r.summary, k).cloned().unwrap_or(Json::Null);
-        out.push((k.clone(), v));
+        out.push((column_name(k, &r.case), v));
     }
     out
+}
+
+/// A summary key as a column: `summary_<key>` when a swept option has the same name (`re`).
+fn column_name(key: &str, case: &CaseSpec) -> String {
+    if case.params.iter().any(|(n, _)| n == key) {
+        format!("summary_{key}")
+    } else {
+        key.to_string()
+    }
 }
 
 /// Serialises ordered pairs as a JSON object.
