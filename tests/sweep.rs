@@ -5,6 +5,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant, SystemTime};
 
+mod record_common;
+
 fn platefall() -> Command {
     Command::new(env!("CARGO_BIN_EXE_platefall"))
 }
@@ -57,10 +59,31 @@ alpha = [0.2, 0.4]
 re = [500, 1000]
 "#;
 
+/// The labels of the points logged at `entity`.
+fn point_labels(d: &record_common::Decoded, entity: &str) -> Vec<String> {
+    let id = rerun::Points2D::descriptor_labels().component;
+    d.chunks
+        .iter()
+        .filter(|c| c.entity_path().to_string() == entity)
+        .flat_map(|c| {
+            c.iter_component::<rerun::components::Text>(id)
+                .collect::<Vec<_>>()
+        })
+        .flat_map(|batch| {
+            batch
+                .iter()
+                .map(|t| t.as_str().to_string())
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
 #[test]
 fn four_cases_run_two_at_a_time_into_four_rows() {
     let dir = scratch("four");
-    let p = plan(&dir, FOUR_STATIC);
+    let fixed = "t-end = 2\nfield-every = 1.0\nfield-res = 32\n";
+    let body = FOUR_STATIC.replace("t-end = 2\n", fixed) + "[outputs]\nrecording = true\n";
+    let p = plan(&dir, &body);
     let out = sweep(&[p.to_str().unwrap(), "--jobs", "2"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
     let out_dir = dir.join("out");
@@ -72,16 +95,46 @@ fn four_cases_run_two_at_a_time_into_four_rows() {
     let ids: Vec<&str> = rows.iter().map(|r| r["id"].as_str().unwrap()).collect();
     assert_eq!(
         ids,
-        ["0000-alpha=0.2-re=500", "0001-alpha=0.2-re=1000", "0002-alpha=0.4-re=500", "0003-alpha=0.4-re=1000"]
+        [
+            "0000-alpha=0.2-re=500",
+            "0001-alpha=0.2-re=1000",
+            "0002-alpha=0.4-re=500",
+            "0003-alpha=0.4-re=1000"
+        ]
     );
     for r in &rows {
         assert_eq!(status_of(r), "completed");
         assert_eq!(r["exit_code"], 0);
-        assert_eq!(r["summary_re"], r["re"].as_f64().unwrap(), "the case ran with its own Re");
+        assert_eq!(
+            r["summary_re"],
+            r["re"].as_f64().unwrap(),
+            "the case ran with its own Re"
+        );
         assert!(r["mean_cl"].as_f64().is_some());
+        let rrd = format!("cases/{}/run.rrd", r["id"].as_str().unwrap());
+        assert_eq!(r["recording"], rrd.as_str());
+        assert!(out_dir.join(&rrd).is_file());
     }
-    for f in ["phase.png", "phase.svg", "phase.rrd", "plan.toml", "sweep.json"] {
-        let len = std::fs::metadata(out_dir.join(f)).map(|m| m.len()).unwrap_or(0);
+    // The Rerun phase diagram: finalised, one entity per case, labelled with its recording.
+    let d = record_common::decode(&out_dir.join("phase.rrd"));
+    assert!(d.has_footer, "phase.rrd not finalised");
+    let cases = d.entities_under("/phase/regime/cases/");
+    assert_eq!(cases.len(), 4, "{cases:?}");
+    for (entity, id) in cases.iter().zip(&ids) {
+        let labels = point_labels(&d, entity);
+        let rrd = out_dir.join("cases").join(id).join("run.rrd");
+        assert_eq!(labels, [format!("{id}\n{}", rrd.display())], "{entity}");
+    }
+    for f in [
+        "phase.png",
+        "phase.svg",
+        "phase.rrd",
+        "plan.toml",
+        "sweep.json",
+    ] {
+        let len = std::fs::metadata(out_dir.join(f))
+            .map(|m| m.len())
+            .unwrap_or(0);
         assert!(len > 100, "{f} missing or empty");
     }
     // Two at a time: some case started before another one had ended.
@@ -89,7 +142,8 @@ fn four_cases_run_two_at_a_time_into_four_rows() {
         .iter()
         .map(|id| {
             let s: serde_json::Value = serde_json::from_str(
-                &std::fs::read_to_string(out_dir.join("cases").join(id).join("status.json")).unwrap(),
+                &std::fs::read_to_string(out_dir.join("cases").join(id).join("status.json"))
+                    .unwrap(),
             )
             .unwrap();
             let t0 = s["started_unix"].as_f64().unwrap();
@@ -105,12 +159,21 @@ fn four_cases_run_two_at_a_time_into_four_rows() {
     let before = mtime(&out_dir.join("cases").join(ids[0]).join("summary.json"));
     let again = sweep(&[p.to_str().unwrap(), "--jobs", "2"]);
     assert_eq!(again.status.code(), Some(0));
-    assert!(text(&again.stderr).contains("(4 already done); running 0"), "{}", text(&again.stderr));
-    assert_eq!(before, mtime(&out_dir.join("cases").join(ids[0]).join("summary.json")));
+    assert!(
+        text(&again.stderr).contains("(4 already done); running 0"),
+        "{}",
+        text(&again.stderr)
+    );
+    assert_eq!(
+        before,
+        mtime(&out_dir.join("cases").join(ids[0]).join("summary.json"))
+    );
 }
 
 fn mtime(p: &Path) -> SystemTime {
-    std::fs::metadata(p).and_then(|m| m.modified()).expect("file exists")
+    std::fs::metadata(p)
+        .and_then(|m| m.modified())
+        .expect("file exists")
 }
 
 fn attempts(log: &Path) -> usize {
@@ -129,7 +192,14 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
     );
     let out_dir = dir.join("out");
     let mut child = platefall()
-        .args(["sweep", p.to_str().unwrap(), "--jobs", "1", "--progress", "off"])
+        .args([
+            "sweep",
+            p.to_str().unwrap(),
+            "--jobs",
+            "1",
+            "--progress",
+            "off",
+        ])
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
@@ -137,7 +207,10 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
     let first = out_dir.join("cases/0000-alpha=0.1/summary.json");
     let start = Instant::now();
     while !first.exists() {
-        assert!(start.elapsed() < Duration::from_secs(120), "the first case never finished");
+        assert!(
+            start.elapsed() < Duration::from_secs(120),
+            "the first case never finished"
+        );
         std::thread::sleep(Duration::from_millis(50));
     }
     std::thread::sleep(Duration::from_millis(300)); // the second case is under way
@@ -152,9 +225,18 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
         .filter(|r| status_of(r) == "completed")
         .map(|r| r["id"].as_str().unwrap().to_string())
         .collect();
-    assert!(!done.is_empty() && done.len() < 4, "completed before the interrupt: {done:?}");
-    let interrupted = first_rows.iter().filter(|r| status_of(r) == "interrupted").count();
-    assert_eq!(interrupted, 1, "the running case was interrupted: {first_rows:?}");
+    assert!(
+        !done.is_empty() && done.len() < 4,
+        "completed before the interrupt: {done:?}"
+    );
+    let interrupted = first_rows
+        .iter()
+        .filter(|r| status_of(r) == "interrupted")
+        .count();
+    assert_eq!(
+        interrupted, 1,
+        "the running case was interrupted: {first_rows:?}"
+    );
     let stamps: Vec<SystemTime> = done
         .iter()
         .map(|id| mtime(&out_dir.join("cases").join(id).join("summary.json")))
@@ -163,15 +245,29 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
     let again = sweep(&[p.to_str().unwrap(), "--jobs", "1"]);
     assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
     let expect = format!("({} already done); running {}", done.len(), 4 - done.len());
-    assert!(text(&again.stderr).contains(&expect), "{}", text(&again.stderr));
+    assert!(
+        text(&again.stderr).contains(&expect),
+        "{}",
+        text(&again.stderr)
+    );
     assert!(rows(&out_dir).iter().all(|r| status_of(r) == "completed"));
     for (id, stamp) in done.iter().zip(&stamps) {
         let case = out_dir.join("cases").join(id);
-        assert_eq!(mtime(&case.join("summary.json")), *stamp, "{id} was run again");
+        assert_eq!(
+            mtime(&case.join("summary.json")),
+            *stamp,
+            "{id} was run again"
+        );
         assert_eq!(attempts(&case.join("log.txt")), 1, "{id} was run again");
     }
-    let rerun = first_rows.iter().find(|r| status_of(r) == "interrupted").unwrap();
-    let log = out_dir.join("cases").join(rerun["id"].as_str().unwrap()).join("log.txt");
+    let rerun = first_rows
+        .iter()
+        .find(|r| status_of(r) == "interrupted")
+        .unwrap();
+    let log = out_dir
+        .join("cases")
+        .join(rerun["id"].as_str().unwrap())
+        .join("log.txt");
     assert_eq!(attempts(&log), 2, "the interrupted case ran a second time");
 }
 
@@ -200,34 +296,99 @@ field-window = ["-2.5,4,-2.5,2.5", "-2.5,4,-2.5,2.5", "1,0,0,1"]
         .iter()
         .map(|r| (status_of(r), r["exit_code"].as_i64().unwrap_or(-1)))
         .collect();
-    assert_eq!(by_status, [("completed", 0), ("diverged", 3), ("failed", 2)]);
-    assert!(rows[1]["message"].as_str().unwrap().starts_with("error:"), "{:?}", rows[1]);
-    assert!(rows[2]["message"].as_str().unwrap().contains("--field-window"), "{:?}", rows[2]);
-    assert!(stdout.contains("diverged (exit 3)") && stdout.contains("failed (exit 2)"), "{stdout}");
+    assert_eq!(
+        by_status,
+        [("completed", 0), ("diverged", 3), ("failed", 2)]
+    );
+    assert!(
+        rows[1]["message"].as_str().unwrap().starts_with("error:"),
+        "{:?}",
+        rows[1]
+    );
+    assert!(
+        rows[2]["message"]
+            .as_str()
+            .unwrap()
+            .contains("--field-window"),
+        "{:?}",
+        rows[2]
+    );
+    assert!(
+        stdout.contains("diverged (exit 3)") && stdout.contains("failed (exit 2)"),
+        "{stdout}"
+    );
 }
 
 #[test]
 fn bad_plans_are_refused_with_exit_2_before_anything_runs() {
     let dir = scratch("bad");
     let cases: &[(&str, &str)] = &[
-        ("case = \"static\"\n[grid]\nalhpa = [0.1]\n", "no option --alhpa"),
-        ("case = \"stattic\"\n[grid]\nalpha = [0.1]\n", "accepted static, forced, pinned, free"),
-        ("case = \"static\"\n[grid]\nalpha = { from = 0, to = 1, count = 0 }\n", "count = 0 is out of range"),
+        (
+            "case = \"static\"\n[grid]\nalhpa = [0.1]\n",
+            "no option --alhpa",
+        ),
+        (
+            "case = \"stattic\"\n[grid]\nalpha = [0.1]\n",
+            "accepted static, forced, pinned, free",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = { from = 0, to = 1, count = 0 }\n",
+            "count = 0 is out of range",
+        ),
         ("case = \"static\"\n[grid]\nalpha = []\n", "empty list"),
-        ("case = \"static\"\n[grid]\nre = { from = 0, to = 100, count = 3, scale = \"log\" }\n", "log range needs from > 0"),
+        (
+            "case = \"static\"\n[grid]\nre = { from = 0, to = 100, count = 3, scale = \"log\" }\n",
+            "log range needs from > 0",
+        ),
         ("case = \"static\"\n[grid]\nalpha = [0.1, 4]\n", "[-3.14"),
-        ("case = \"static\"\n[grid]\nresolution = [8, 2000]\n", "2000"),
-        ("case = \"static\"\n[grid]\nalpha = [0.1]\n[zip]\nalpha = [0.2]\n", "already given in [grid]"),
-        ("case = \"static\"\n[grid]\nt-end = [1]\nt_end = [2]\n", "already given"),
-        ("case = \"static\"\n[grid]\nalpha = [0.1]\nalpha = [0.2]\n", "line 5: duplicate key"),
-        ("case = \"static\"\n[fixed]\nsummary = \"x.json\"\n[grid]\nalpha = [0.1]\n", "sets --summary itself"),
-        ("case = \"static\"\n[fixed]\nseed-grid = 3\n[grid]\nalpha = [0.1]\n", "accepted true or false"),
-        ("case = \"static\"\n[zip]\nalpha = [0.1, 0.2]\nre = [100]\n", "equally many values"),
-        ("case = \"static\"\n[grid]\nalpha = [0.1]\n[diagram]\nx = \"re\"\n", "not a swept option"),
-        ("case = \"static\"\n[grid]\nalpha = [0.1]\n[diagram]\nvalue = \"mean_foo\"\n", "not a summary key"),
-        ("case = \"static\"\n[fixed]\nalpha = 0.1\n", "nothing is swept"),
-        ("case = \"static\"\nwhat = 1\n[grid]\nalpha = [0.1]\n", "unknown field"),
-        ("case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\ntime = \"1 h\"\n", "[slurm] time"),
+        (
+            "case = \"static\"\n[grid]\nresolution = [8, 2000]\n",
+            "2000",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[zip]\nalpha = [0.2]\n",
+            "already given in [grid]",
+        ),
+        (
+            "case = \"static\"\n[grid]\nt-end = [1]\nt_end = [2]\n",
+            "already given",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\nalpha = [0.2]\n",
+            "line 5: duplicate key",
+        ),
+        (
+            "case = \"static\"\n[fixed]\nsummary = \"x.json\"\n[grid]\nalpha = [0.1]\n",
+            "sets --summary itself",
+        ),
+        (
+            "case = \"static\"\n[fixed]\nseed-grid = 3\n[grid]\nalpha = [0.1]\n",
+            "accepted true or false",
+        ),
+        (
+            "case = \"static\"\n[zip]\nalpha = [0.1, 0.2]\nre = [100]\n",
+            "equally many values",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[diagram]\nx = \"re\"\n",
+            "not a swept option",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[diagram]\nvalue = \"mean_foo\"\n",
+            "not a summary key",
+        ),
+        (
+            "case = \"static\"\n[fixed]\nalpha = 0.1\n",
+            "nothing is swept",
+        ),
+        (
+            "case = \"static\"\nwhat = 1\n[grid]\nalpha = [0.1]\n",
+            "unknown field",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\ntime = \"1 h\"\n",
+            "[slurm] time",
+        ),
     ];
     for (body, expect) in cases {
         let p = plan(&dir, body);
@@ -256,7 +417,10 @@ fn collect_merges_a_partial_directory_and_lists_what_is_missing() {
     let script = std::fs::read_to_string(out_dir.join("sweep.sbatch")).unwrap();
     assert!(script.contains("#SBATCH --array=0-3\n"), "{script}");
     assert!(script.contains("#SBATCH --time=00:05:00\n"), "{script}");
-    assert!(script.contains(&format!("{} sweep run-case ", env!("CARGO_BIN_EXE_platefall"))));
+    assert!(script.contains(&format!(
+        "{} sweep run-case ",
+        env!("CARGO_BIN_EXE_platefall")
+    )));
     assert!(text(&out.stdout).contains("sbatch "));
 
     let dir_s = out_dir.to_str().unwrap();
@@ -265,11 +429,24 @@ fn collect_merges_a_partial_directory_and_lists_what_is_missing() {
     let col = sweep(&["collect", dir_s]);
     assert_eq!(col.status.code(), Some(3), "{}", text(&col.stderr));
     let stdout = text(&col.stdout);
-    assert!(stdout.contains("4 cases: 1 completed, 3 missing"), "{stdout}");
-    for id in ["0000-alpha=0.2-re=500", "0001-alpha=0.2-re=1000", "0003-alpha=0.4-re=1000"] {
-        assert!(stdout.contains(&format!("{id} missing: not run yet")), "{stdout}");
+    assert!(
+        stdout.contains("4 cases: 1 completed, 3 missing"),
+        "{stdout}"
+    );
+    for id in [
+        "0000-alpha=0.2-re=500",
+        "0001-alpha=0.2-re=1000",
+        "0003-alpha=0.4-re=1000",
+    ] {
+        assert!(
+            stdout.contains(&format!("{id} missing: not run yet")),
+            "{stdout}"
+        );
     }
-    let statuses: Vec<String> = rows(&out_dir).iter().map(|r| status_of(r).to_string()).collect();
+    let statuses: Vec<String> = rows(&out_dir)
+        .iter()
+        .map(|r| status_of(r).to_string())
+        .collect();
     assert_eq!(statuses, ["missing", "missing", "completed", "missing"]);
     // The next script holds only the cases still to do.
     let again = sweep(&[p.to_str().unwrap(), "--slurm"]);
@@ -280,5 +457,9 @@ fn collect_merges_a_partial_directory_and_lists_what_is_missing() {
     let other = plan(&dir, &FOUR_STATIC.replace("0.4", "0.5"));
     let refused = sweep(&[other.to_str().unwrap()]);
     assert_eq!(refused.status.code(), Some(2));
-    assert!(text(&refused.stderr).contains("was made from a different plan"), "{}", text(&refused.stderr));
+    assert!(
+        text(&refused.stderr).contains("was made from a different plan"),
+        "{}",
+        text(&refused.stderr)
+    );
 }

@@ -13,7 +13,11 @@ const MAX_ID_PARAMS: usize = 120;
 impl Plan {
     /// Every swept option's name, grid first.
     pub fn swept_names(&self) -> Vec<String> {
-        self.grid.iter().chain(&self.zip).map(|a| a.name.clone()).collect()
+        self.grid
+            .iter()
+            .chain(&self.zip)
+            .map(|a| a.name.clone())
+            .collect()
     }
 
     /// Number of cases.
@@ -32,7 +36,10 @@ impl Plan {
             rest /= a.values.len();
         }
         grid.reverse();
-        let zipped = self.zip.iter().map(|a| (a.name.clone(), a.values[z].clone()));
+        let zipped = self
+            .zip
+            .iter()
+            .map(|a| (a.name.clone(), a.values[z].clone()));
         grid.into_iter().chain(zipped).collect()
     }
 
@@ -44,7 +51,9 @@ impl Plan {
             .map(|(n, v)| format!("-{n}={}", v.id_part()))
             .collect();
         if tail.len() > MAX_ID_PARAMS {
-            let cut = (0..=MAX_ID_PARAMS).rev().find(|&i| tail.is_char_boundary(i));
+            let cut = (0..=MAX_ID_PARAMS)
+                .rev()
+                .find(|&i| tail.is_char_boundary(i));
             tail.truncate(cut.unwrap_or(0));
         }
         let id = format!("{index:0width$}{tail}");

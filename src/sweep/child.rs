@@ -86,7 +86,12 @@ pub struct Running {
 
 /// Starts a case: removes a stale summary, appends an attempt header to its log, records
 /// `status.json` as running, and spawns `exe` with the case's arguments.
-pub fn launch(exe: &Path, layout: &Layout, case: &CaseSpec, recording: bool) -> std::io::Result<Running> {
+pub fn launch(
+    exe: &Path,
+    layout: &Layout,
+    case: &CaseSpec,
+    recording: bool,
+) -> std::io::Result<Running> {
     let id = &case.id;
     std::fs::create_dir_all(layout.case_dir(id))?;
     match std::fs::remove_file(layout.summary(id)) {
@@ -95,7 +100,10 @@ pub fn launch(exe: &Path, layout: &Layout, case: &CaseSpec, recording: bool) -> 
     }
     let attempt = read_status(layout, id).map_or(1, |s| s.attempt + 1);
     let args = full_args(layout, case, recording);
-    let mut log = OpenOptions::new().create(true).append(true).open(layout.log(id))?;
+    let mut log = OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(layout.log(id))?;
     let now = SystemTime::now();
     writeln!(
         log,
@@ -185,7 +193,10 @@ pub fn finish(layout: &Layout, mut r: Running, exit: ExitStatus) -> CaseStatus {
     };
     if let Ok(bytes) = serde_json::to_vec_pretty(&r.status) {
         if let Err(e) = write_atomic(&layout.status(&id), &bytes) {
-            eprintln!("warning: cannot write {}: {e}", layout.status(&id).display());
+            eprintln!(
+                "warning: cannot write {}: {e}",
+                layout.status(&id).display()
+            );
         }
     }
     r.status
@@ -227,7 +238,10 @@ pub fn last_error_line(log: &Path, from: u64) -> String {
         .unwrap_or("");
     let mut line = pick.to_string();
     if line.len() > 300 {
-        let cut = (0..=300).rev().find(|&i| line.is_char_boundary(i)).unwrap_or(0);
+        let cut = (0..=300)
+            .rev()
+            .find(|&i| line.is_char_boundary(i))
+            .unwrap_or(0);
         line.truncate(cut);
         line.push('…');
     }

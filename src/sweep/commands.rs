@@ -35,9 +35,9 @@ fn dispatch(args: &SweepArgs) -> Result<u8, Failure> {
                 .as_deref()
                 .ok_or_else(|| Failure::input("give a plan file: platefall sweep PLAN.toml"))?;
             let plan = plan::load(path).map_err(Failure::input)?;
-            let cases = plan.checked_cases().map_err(|e| {
-                Failure::input(format!("plan {}: {e}", path.display()))
-            })?;
+            let cases = plan
+                .checked_cases()
+                .map_err(|e| Failure::input(format!("plan {}: {e}", path.display())))?;
             let layout = Layout::new(&output_dir(args, &plan, path)?);
             if args.dry_run {
                 dry_run(&layout, &plan, &cases);
@@ -82,25 +82,41 @@ fn dry_run(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) {
         cases.len() - done
     );
     for c in cases {
-        let mark = if is_done(layout, &c.id) { "done" } else { "todo" };
+        let mark = if is_done(layout, &c.id) {
+            "done"
+        } else {
+            "todo"
+        };
         println!("{mark}  {}  platefall {}", c.id, c.args.join(" "));
     }
 }
 
 /// Makes (or checks) the directory and takes its lock.
-fn open_dir(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<super::layout::DirLock, Failure> {
-    std::fs::create_dir_all(&layout.dir).map_err(|e| {
-        Failure::output(format!("cannot create {}: {e}", layout.dir.display()))
-    })?;
+fn open_dir(
+    layout: &Layout,
+    plan: &Plan,
+    cases: &[CaseSpec],
+) -> Result<super::layout::DirLock, Failure> {
+    std::fs::create_dir_all(&layout.dir)
+        .map_err(|e| Failure::output(format!("cannot create {}: {e}", layout.dir.display())))?;
     let guard = lock(layout)?;
     prepare(layout, plan, cases)?;
     Ok(guard)
 }
 
 /// A local sweep: the cases not yet done, `--jobs` at once, then the merged results.
-fn local(args: &SweepArgs, layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<u8, Failure> {
+fn local(
+    args: &SweepArgs,
+    layout: &Layout,
+    plan: &Plan,
+    cases: &[CaseSpec],
+) -> Result<u8, Failure> {
     let jobs = match args.jobs {
-        Some(0) => return Err(Failure::input("--jobs 0 is out of range: accepted 1 or more")),
+        Some(0) => {
+            return Err(Failure::input(
+                "--jobs 0 is out of range: accepted 1 or more",
+            ))
+        }
         Some(n) => n,
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
@@ -124,7 +140,15 @@ fn local(args: &SweepArgs, layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> 
     let presses = interrupt_counter()?;
     let mut progress = Progress::new(args.progress, cases.len(), done);
     let recording = plan.outputs.recording;
-    let interrupted = run_pool(&exe, layout, &todo, recording, jobs, &mut progress, &presses);
+    let interrupted = run_pool(
+        &exe,
+        layout,
+        &todo,
+        recording,
+        jobs,
+        &mut progress,
+        &presses,
+    );
     progress.finish();
     let code = merge(layout, plan, cases)?;
     Ok(if interrupted { EXIT_INTERRUPTED } else { code })
@@ -150,9 +174,17 @@ pub fn merge(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<u8, Fai
     println!(
         "results: {}/results.csv, results.json, phase.png, phase.svg{}",
         layout.dir.display(),
-        if cfg!(feature = "viewer") { ", phase.rrd" } else { "" }
+        if cfg!(feature = "viewer") {
+            ", phase.rrd"
+        } else {
+            ""
+        }
     );
-    Ok(if missing.is_empty() { 0 } else { EXIT_INCOMPLETE })
+    Ok(if missing.is_empty() {
+        0
+    } else {
+        EXIT_INCOMPLETE
+    })
 }
 
 /// The plan and cases of a prepared directory (its own `plan.toml`, checked against `sweep.json`).
@@ -206,7 +238,12 @@ fn run_case(dir: &Path, index: usize) -> Result<u8, Failure> {
         match running.child.try_wait() {
             Ok(Some(exit)) => break exit,
             Ok(None) => {}
-            Err(e) => return Err(Failure::output(format!("{}: lost the process: {e}", case.id))),
+            Err(e) => {
+                return Err(Failure::output(format!(
+                    "{}: lost the process: {e}",
+                    case.id
+                )))
+            }
         }
         let p = presses.load(Ordering::SeqCst);
         if p > forwarded {

@@ -44,10 +44,17 @@ pub struct PlotAxis {
 impl PlotAxis {
     fn new(axis: &Axis, scale: Scale) -> PlotAxis {
         let numeric = axis.values.iter().all(|v| v.as_f64().is_some());
-        let log_ok = axis.values.iter().all(|v| v.as_f64().is_some_and(|x| x > 0.0));
+        let log_ok = axis
+            .values
+            .iter()
+            .all(|v| v.as_f64().is_some_and(|x| x > 0.0));
         PlotAxis {
             name: axis.name.clone(),
-            scale: if numeric && log_ok { scale } else { Scale::Linear },
+            scale: if numeric && log_ok {
+                scale
+            } else {
+                Scale::Linear
+            },
             categories: (!numeric).then(|| {
                 let mut c: Vec<String> = Vec::new();
                 for v in &axis.values {
@@ -151,14 +158,21 @@ impl DiagramData {
         let d = &plan.diagram;
         let find = |name: &str| plan.grid.iter().chain(&plan.zip).find(|a| a.name == name);
         let x_axis = find(&d.x).map(|a| PlotAxis::new(a, d.x_scale));
-        let y_axis = d.y.as_deref().and_then(find).map(|a| PlotAxis::new(a, d.y_scale));
+        let y_axis =
+            d.y.as_deref()
+                .and_then(find)
+                .map(|a| PlotAxis::new(a, d.y_scale));
         let x = x_axis.unwrap_or(PlotAxis {
             name: d.x.clone(),
             scale: Scale::Linear,
             categories: None,
         });
         let param = |r: &Row, name: &str| {
-            r.case.params.iter().find(|(n, _)| n == name).map(|(_, v)| v.clone())
+            r.case
+                .params
+                .iter()
+                .find(|(n, _)| n == name)
+                .map(|(_, v)| v.clone())
         };
         let points = rows
             .iter()
@@ -228,7 +242,11 @@ pub fn colour_map(s: f64) -> Rgb {
         (94, 201, 98),
         (253, 231, 37),
     ];
-    let s = if s.is_finite() { s.clamp(0.0, 1.0) } else { 0.0 };
+    let s = if s.is_finite() {
+        s.clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     let f = s * (STOPS.len() - 1) as f64;
     let i = (f.floor() as usize).min(STOPS.len() - 2);
     let t = f - i as f64;

@@ -36,7 +36,8 @@ pub fn write_output(path: &Path, bytes: &[u8]) -> Result<(), super::Failure> {
 
 /// Seconds since the Unix epoch.
 pub fn unix_seconds(t: SystemTime) -> f64 {
-    t.duration_since(UNIX_EPOCH).map_or(0.0, |d| d.as_secs_f64())
+    t.duration_since(UNIX_EPOCH)
+        .map_or(0.0, |d| d.as_secs_f64())
 }
 
 /// A time as `YYYY-MM-DDTHH:MM:SSZ` (UTC).

@@ -172,13 +172,21 @@ pub fn lock(layout: &Layout) -> Result<DirLock, Failure> {
             )));
         }
         Err(std::fs::TryLockError::Error(e)) => {
-            return Err(Failure::output(format!("cannot lock {}: {e}", path.display())))
+            return Err(Failure::output(format!(
+                "cannot lock {}: {e}",
+                path.display()
+            )))
         }
     }
     let _ = file.set_len(0);
     let _ = std::io::Write::write_all(
         &mut &file,
-        format!("pid {} on {}", std::process::id(), super::fsutil::hostname()).as_bytes(),
+        format!(
+            "pid {} on {}",
+            std::process::id(),
+            super::fsutil::hostname()
+        )
+        .as_bytes(),
     );
     Ok(DirLock { _file: file })
 }

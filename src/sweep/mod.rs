@@ -21,6 +21,8 @@ pub mod fsutil;
 pub mod json;
 pub mod layout;
 pub mod plan;
+#[cfg(test)]
+mod plan_tests;
 pub mod plot;
 pub mod progress;
 #[cfg(feature = "viewer")]

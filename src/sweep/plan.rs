@@ -363,7 +363,11 @@ fn diagram(raw: &RawDiagram, grid: &[Axis], zip: &[Axis], case: &str) -> Result<
 
 /// Slurm strings end up in a shell script: refuse line breaks.
 fn check_slurm(s: &SlurmPlan) -> Result<(), String> {
-    let fields = [("time", &s.time), ("memory", &s.memory), ("partition", &s.partition)];
+    let fields = [
+        ("time", &s.time),
+        ("memory", &s.memory),
+        ("partition", &s.partition),
+    ];
     for (key, v) in fields {
         if let Some(v) = v {
             if v.is_empty() || v.contains(['\n', '\r', ' ']) {

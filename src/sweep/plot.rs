@@ -7,7 +7,8 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::diagram::{
-    colour_map, regime_colour, short_number, span, DiagramData, PlotAxis, Point, Rgb, FAILED, REGIMES,
+    colour_map, regime_colour, short_number, span, DiagramData, PlotAxis, Point, Rgb, FAILED,
+    REGIMES,
 };
 use super::fsutil::write_output;
 use super::layout::Layout;
@@ -176,7 +177,11 @@ fn regime_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Resu
     }
     let mut entries = Vec::new();
     for key in keys {
-        let pts: Vec<&Point> = data.points.iter().filter(|p| regime_key(p) == key).collect();
+        let pts: Vec<&Point> = data
+            .points
+            .iter()
+            .filter(|p| regime_key(p) == key)
+            .collect();
         if pts.is_empty() {
             continue;
         }
@@ -194,8 +199,12 @@ fn legend<DB: DrawingBackend>(area: &Area<DB>, entries: &[(String, Style)]) -> R
     for (i, (label, style)) in entries.iter().enumerate() {
         let y = 70 + 24 * i as i32;
         area.draw(&point_element((12, y), *style)).map_err(err)?;
-        area.draw(&Text::new(label.clone(), (26, y - 8), (FONT, 14).into_font()))
-            .map_err(err)?;
+        area.draw(&Text::new(
+            label.clone(),
+            (26, y - 8),
+            (FONT, 14).into_font(),
+        ))
+        .map_err(err)?;
     }
     Ok(())
 }
@@ -252,7 +261,10 @@ fn value_map_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> R
 }
 
 /// A vertical colour bar with its extreme and middle values.
-fn colour_bar<DB: DrawingBackend>(area: &Area<DB>, range: Option<(f64, f64)>) -> Result<(), String> {
+fn colour_bar<DB: DrawingBackend>(
+    area: &Area<DB>,
+    range: Option<(f64, f64)>,
+) -> Result<(), String> {
     let (w, h) = area.dim_in_pixel();
     let (top, bottom) = (60i32, h as i32 - 60);
     let Some((lo, hi)) = range else {
@@ -279,7 +291,10 @@ fn colour_bar<DB: DrawingBackend>(area: &Area<DB>, range: Option<(f64, f64)>) ->
 }
 
 /// The right panel of a one-parameter sweep: the chosen value against the swept option.
-fn value_curve_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Result<(), String> {
+fn value_curve_panel<DB: DrawingBackend>(
+    area: &Area<DB>,
+    data: &DiagramData,
+) -> Result<(), String> {
     let mut pts: Vec<(f64, f64)> = data
         .points
         .iter()
@@ -291,9 +306,14 @@ fn value_curve_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) ->
     let y = YAxis::Value(&data.value_key);
     let mut chart = chart_in(area, &data.value_key, &data.x, y, xs, vs)?;
     let line = rgb((31, 119, 180));
-    chart.draw_series(LineSeries::new(pts.clone(), line.stroke_width(2))).map_err(err)?;
     chart
-        .draw_series(pts.iter().map(|&(x, v)| Circle::new((x, v), 4, line.filled())))
+        .draw_series(LineSeries::new(pts.clone(), line.stroke_width(2)))
+        .map_err(err)?;
+    chart
+        .draw_series(
+            pts.iter()
+                .map(|&(x, v)| Circle::new((x, v), 4, line.filled())),
+        )
         .map_err(err)?;
     Ok(())
 }

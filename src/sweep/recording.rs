@@ -6,9 +6,14 @@
 use std::path::Path;
 
 use rerun::components::{Radius, Text};
-use rerun::{AnyValues, Color, EntityPath, EntityPathPart, LineStrips2D, Points2D, RecordingStream, TextDocument};
+use rerun::{
+    AnyValues, Color, EntityPath, EntityPathPart, LineStrips2D, Points2D, RecordingStream,
+    TextDocument,
+};
 
-use super::diagram::{colour_map, regime_colour, short_number, span, DiagramData, Point, Rgb, FAILED, REGIMES};
+use super::diagram::{
+    colour_map, regime_colour, short_number, span, DiagramData, Point, Rgb, FAILED, REGIMES,
+};
 use super::fsutil::temp_beside;
 use super::layout::Layout;
 use super::Failure;
@@ -106,7 +111,13 @@ fn log_case(
         .with_component::<Text>("case", [p.id.as_str()])
         .with_component::<Text>("status", [p.status])
         .with_component::<Text>("regime", [p.regime.as_str()])
-        .with_component::<Text>("value", [format!("{key} = {}", p.value.map_or("none".into(), |v| v.to_string()))])
+        .with_component::<Text>(
+            "value",
+            [format!(
+                "{key} = {}",
+                p.value.map_or("none".into(), |v| v.to_string())
+            )],
+        )
         .with_component::<Text>("recording", [file.as_str()])
         .with_component::<Text>("open", [open_command(p.recording.as_deref())]);
     let regime_path = path(&["phase", "regime", "cases", &p.id]);
@@ -205,7 +216,10 @@ fn legend_markdown(data: &DiagramData) -> String {
             short_number(hi)
         ));
     }
-    md.push_str(&format!("| case | status | regime | {} | recording |\n|---|---|---|---|---|\n", data.value_key));
+    md.push_str(&format!(
+        "| case | status | regime | {} | recording |\n|---|---|---|---|---|\n",
+        data.value_key
+    ));
     for p in &data.points {
         md.push_str(&format!(
             "| {} | {} | {} | {} | {} |\n",
@@ -213,7 +227,9 @@ fn legend_markdown(data: &DiagramData) -> String {
             p.status,
             p.regime,
             p.value.map_or("".into(), short_number),
-            p.recording.as_deref().map_or("—".into(), |f| format!("`{}`", f.display()))
+            p.recording
+                .as_deref()
+                .map_or("—".into(), |f| format!("`{}`", f.display()))
         ));
     }
     md

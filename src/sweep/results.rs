@@ -108,7 +108,10 @@ fn record(layout: &Layout, r: &Row, keys: &[String]) -> Object {
             .into_owned()
     });
     out.push(("status".into(), Json::from(r.status)));
-    out.push(("exit_code".into(), r.exit_code.map_or(Json::Null, Json::from)));
+    out.push((
+        "exit_code".into(),
+        r.exit_code.map_or(Json::Null, Json::from),
+    ));
     out.push(("message".into(), Json::from(r.message.clone())));
     out.push(("recording".into(), rec.map_or(Json::Null, Json::from)));
     for k in keys {
@@ -170,13 +173,21 @@ pub fn write_tables(layout: &Layout, rows: &[Row]) -> Result<(), Failure> {
     }
     write_output(&layout.output("results.csv"), csv.as_bytes())?;
     let ordered: Vec<Ordered> = records.iter().map(Ordered).collect();
-    let text = serde_json::to_string_pretty(&ordered).map_err(|e| Failure::output(e.to_string()))?;
+    let text =
+        serde_json::to_string_pretty(&ordered).map_err(|e| Failure::output(e.to_string()))?;
     write_output(&layout.output("results.json"), (text + "\n").as_bytes())
 }
 
 /// Counts of each status, in a fixed order, for the closing line.
 pub fn tally(rows: &[Row]) -> String {
-    let order = ["completed", "diverged", "failed", "interrupted", "unfinished", "missing"];
+    let order = [
+        "completed",
+        "diverged",
+        "failed",
+        "interrupted",
+        "unfinished",
+        "missing",
+    ];
     let parts: Vec<String> = order
         .iter()
         .filter_map(|s| {
@@ -192,7 +203,9 @@ pub fn not_completed(rows: &[Row]) -> Vec<String> {
     rows.iter()
         .filter(|r| r.status != "completed")
         .map(|r| {
-            let code = r.exit_code.map_or(String::new(), |c| format!(" (exit {c})"));
+            let code = r
+                .exit_code
+                .map_or(String::new(), |c| format!(" (exit {c})"));
             format!("  {} {}{code}: {}", r.case.id, r.status, r.message)
         })
         .collect()

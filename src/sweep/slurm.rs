@@ -51,7 +51,10 @@ pub fn array_spec(indices: &[usize]) -> String {
 
 /// A word for the shell, single-quoted when it needs to be.
 fn quote(s: &str) -> String {
-    if !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric() || "-_./=:,+%@".contains(c)) {
+    if !s.is_empty()
+        && s.chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+%@".contains(c))
+    {
         s.to_string()
     } else {
         format!("'{}'", s.replace('\'', "'\\''"))
@@ -62,7 +65,13 @@ fn quote(s: &str) -> String {
 fn job_name(name: &str) -> String {
     let clean: String = name
         .chars()
-        .map(|c| if c.is_ascii_alphanumeric() || "-_.".contains(c) { c } else { '_' })
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || "-_.".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
         .collect();
     format!("platefall-{clean}")
 }
@@ -82,14 +91,27 @@ pub fn script(layout: &Layout, plan: &Plan, todo: &[usize], res: &SlurmPlan, exe
         todo.len(),
         plan.case
     ));
-    s.push_str(&format!("# Submit: sbatch {}\n", quote(&layout.output("sweep.sbatch").to_string_lossy())));
-    s.push_str(&format!("# Merge what has finished: {} sweep collect {}\n", quote(exe), quote(&dir)));
+    s.push_str(&format!(
+        "# Submit: sbatch {}\n",
+        quote(&layout.output("sweep.sbatch").to_string_lossy())
+    ));
+    s.push_str(&format!(
+        "# Merge what has finished: {} sweep collect {}\n",
+        quote(exe),
+        quote(&dir)
+    ));
     let mut opt = |line: String| s.push_str(&format!("#SBATCH {line}\n"));
     opt(format!("--job-name={}", job_name(&plan.name)));
     opt(format!("--array={array}"));
     opt(format!("--output={}/%A_%a.out", logs.to_string_lossy()));
-    opt(format!("--time={}", res.time.as_deref().unwrap_or(DEFAULT_TIME)));
-    opt(format!("--mem={}", res.memory.as_deref().unwrap_or(DEFAULT_MEMORY)));
+    opt(format!(
+        "--time={}",
+        res.time.as_deref().unwrap_or(DEFAULT_TIME)
+    ));
+    opt(format!(
+        "--mem={}",
+        res.memory.as_deref().unwrap_or(DEFAULT_MEMORY)
+    ));
     opt(format!("--cpus-per-task={}", res.cpus.unwrap_or(1)));
     opt("--ntasks=1".into());
     if let Some(p) = &res.partition {
@@ -121,7 +143,10 @@ pub fn submit_script(
 ) -> Result<u8, Failure> {
     let exe = this_exe()?;
     std::fs::create_dir_all(layout.slurm_logs()).map_err(|e| {
-        Failure::output(format!("cannot create {}: {e}", layout.slurm_logs().display()))
+        Failure::output(format!(
+            "cannot create {}: {e}",
+            layout.slurm_logs().display()
+        ))
     })?;
     prepare(layout, plan, cases)?;
     let todo: Vec<usize> = cases
