@@ -191,7 +191,7 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
         "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 30\n[grid]\nalpha = [0.1, 0.2, 0.3, 0.4]\n",
     );
     let out_dir = dir.join("out");
-    let mut child = platefall()
+    let child = platefall()
         .args([
             "sweep",
             p.to_str().unwrap(),
@@ -214,6 +214,13 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
         std::thread::sleep(Duration::from_millis(50));
     }
     std::thread::sleep(Duration::from_millis(300)); // the second case is under way
+    let second = sweep(&[p.to_str().unwrap(), "--jobs", "1"]);
+    assert_eq!(
+        second.status.code(),
+        Some(2),
+        "a second sweep ran in the same directory"
+    );
+    assert!(text(&second.stderr).contains("is in use by another sweep (pid "));
     unsafe {
         libc::kill(child.id() as libc::pid_t, libc::SIGINT);
     }

@@ -161,22 +161,15 @@ pub fn lock(layout: &Layout) -> Result<DirLock, Failure> {
         .write(true)
         .open(&path)
         .map_err(|e| Failure::output(format!("cannot create {}: {e}", path.display())))?;
-    match file.try_lock() {
-        Ok(()) => {}
-        Err(std::fs::TryLockError::WouldBlock) => {
-            let holder = std::fs::read_to_string(&path).unwrap_or_default();
-            return Err(Failure::input(format!(
-                "{} is in use by another sweep ({}); wait for it to end or stop it",
-                layout.dir.display(),
-                holder.trim()
-            )));
-        }
-        Err(std::fs::TryLockError::Error(e)) => {
-            return Err(Failure::output(format!(
-                "cannot lock {}: {e}",
-                path.display()
-            )))
-        }
+    if !try_lock(&file)
+        .map_err(|e| Failure::output(format!("cannot lock {}: {e}", path.display())))?
+    {
+        let holder = std::fs::read_to_string(&path).unwrap_or_default();
+        return Err(Failure::input(format!(
+            "{} is in use by another sweep ({}); wait for it to end or stop it",
+            layout.dir.display(),
+            holder.trim()
+        )));
     }
     let _ = file.set_len(0);
     let _ = std::io::Write::write_all(
@@ -189,4 +182,26 @@ pub fn lock(layout: &Layout) -> Result<DirLock, Failure> {
         .as_bytes(),
     );
     Ok(DirLock { _file: file })
+}
+
+/// An exclusive, non-blocking `flock`: Ok(false) if another process holds it.
+#[cfg(unix)]
+fn try_lock(file: &File) -> std::io::Result<bool> {
+    use std::os::unix::io::AsRawFd;
+    // SAFETY: flock on a descriptor we own for the duration of the call.
+    if unsafe { libc::flock(file.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) } == 0 {
+        return Ok(true);
+    }
+    let e = std::io::Error::last_os_error();
+    if e.raw_os_error() == Some(libc::EWOULDBLOCK) {
+        Ok(false)
+    } else {
+        Err(e)
+    }
+}
+
+/// Elsewhere there is no lock.
+#[cfg(not(unix))]
+fn try_lock(_file: &File) -> std::io::Result<bool> {
+    Ok(true)
 }
