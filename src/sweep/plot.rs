@@ -5,6 +5,7 @@
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::diagram::{
     colour_map, regime_colour, short_number, span, DiagramData, PlotAxis, Point, Rgb, FAILED,
@@ -109,15 +110,27 @@ enum YAxis<'a> {
 
 type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
-/// A panel with its caption, axes, grid and tick labels.
+/// Most swept values labelled one by one on an axis; with more, plotters places the ticks.
+const MAX_SWEPT_TICKS: usize = 12;
+
+/// The distinct positions of the cases along an axis, when few enough to label each.
+fn swept_ticks(positions: impl Iterator<Item = f64>) -> Option<Vec<f64>> {
+    let mut v: Vec<f64> = positions.collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * b.abs().max(1.0));
+    (!v.is_empty() && v.len() <= MAX_SWEPT_TICKS).then_some(v)
+}
+
+/// A panel with its caption, axes, grid and tick labels (at the swept values when there are few).
 fn chart_in<'a, DB: DrawingBackend>(
     area: &'a Area<DB>,
     caption: &str,
-    x: &PlotAxis,
+    data: &DiagramData,
     y: YAxis,
-    xs: (f64, f64),
-    ys: (f64, f64),
+    ranges: ((f64, f64), (f64, f64)),
 ) -> Result<Chart<'a, DB>, String> {
+    let (xs, ys) = ranges;
+    let x = &data.x;
     let mut chart = ChartBuilder::on(area)
         .caption(caption, (FONT, 18))
         .margin(12)
@@ -125,6 +138,11 @@ fn chart_in<'a, DB: DrawingBackend>(
         .y_label_area_size(if matches!(y, YAxis::Strip) { 10 } else { 64 })
         .build_cartesian_2d(xs.0..xs.1, ys.0..ys.1)
         .map_err(err)?;
+    let x_ticks = swept_ticks(data.points.iter().map(|p| p.x));
+    let y_ticks = match y {
+        YAxis::Param(_) => swept_ticks(data.points.iter().map(|p| p.y)),
+        _ => None,
+    };
     let x_fmt = |v: &f64| x.label(*v);
     let y_fmt = |v: &f64| match y {
         YAxis::Param(a) => a.label(*v),
@@ -137,14 +155,14 @@ fn chart_in<'a, DB: DrawingBackend>(
         .label_style((FONT, 13))
         .axis_desc_style((FONT, 15))
         .light_line_style(RGBColor(242, 242, 242));
-    if let Some(n) = x.categories.as_ref().map(Vec::len) {
-        mesh.x_labels(n);
+    if x_ticks.is_some() {
+        mesh.x_labels(0);
     }
     match y {
         YAxis::Param(a) => {
             mesh.y_desc(a.title());
-            if let Some(n) = a.categories.as_ref().map(Vec::len) {
-                mesh.y_labels(n);
+            if y_ticks.is_some() {
+                mesh.y_labels(0);
             }
         }
         YAxis::Value(key) => {
@@ -155,7 +173,48 @@ fn chart_in<'a, DB: DrawingBackend>(
         }
     }
     mesh.draw().map_err(err)?;
+    if let Some(t) = &x_ticks {
+        label_ticks(area, &mut chart, t, |p| (p, ys.0), |p| x.label(p))?;
+    }
+    if let (Some(t), YAxis::Param(a)) = (&y_ticks, y) {
+        label_ticks(area, &mut chart, t, |p| (xs.0, p), |p| a.label(p))?;
+    }
     Ok(chart)
+}
+
+/// Grid lines and labels at given positions along one axis: `at` places a position on the axis
+/// line (the other coordinate at its lower end).
+fn label_ticks<DB: DrawingBackend>(
+    area: &Area<DB>,
+    chart: &mut Chart<'_, DB>,
+    positions: &[f64],
+    at: impl Fn(f64) -> (f64, f64),
+    label: impl Fn(f64) -> String,
+) -> Result<(), String> {
+    let (xr, yr) = (chart.x_range(), chart.y_range());
+    let base = area.get_base_pixel();
+    for &p in positions {
+        let (x, y) = at(p);
+        let vertical = y == yr.start;
+        let line = if vertical {
+            vec![(x, yr.start), (x, yr.end)]
+        } else {
+            vec![(xr.start, y), (xr.end, y)]
+        };
+        chart
+            .draw_series(LineSeries::new(line, RGBColor(200, 200, 200)))
+            .map_err(err)?;
+        let (px, py) = chart.backend_coord(&(x, y));
+        let (px, py) = (px - base.0, py - base.1);
+        let (pos, anchor) = if vertical {
+            ((px, py + 6), Pos::new(HPos::Center, VPos::Top))
+        } else {
+            ((px - 6, py), Pos::new(HPos::Right, VPos::Center))
+        };
+        let style = (FONT, 13).into_font().color(&BLACK).pos(anchor);
+        area.draw(&Text::new(label(p), pos, style)).map_err(err)?;
+    }
+    Ok(())
 }
 
 /// Width of the legend column beside the regime panel.
@@ -167,7 +226,7 @@ fn regime_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Resu
     let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
     let ys = span(data.y.as_ref(), data.points.iter().map(|p| p.y));
     let y = data.y.as_ref().map_or(YAxis::Strip, YAxis::Param);
-    let mut chart = chart_in(&plot_area, "motion regime", &data.x, y, xs, ys)?;
+    let mut chart = chart_in(&plot_area, "motion regime", data, y, (xs, ys))?;
     let mut keys: Vec<String> = REGIMES.iter().map(|(n, _)| n.to_string()).collect();
     for p in &data.points {
         let k = regime_key(p);
@@ -243,7 +302,7 @@ fn value_map_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> R
     let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
     let ys = span(data.y.as_ref(), data.points.iter().map(|p| p.y));
     let y = data.y.as_ref().map_or(YAxis::Strip, YAxis::Param);
-    let mut chart = chart_in(&plot_area, &data.value_key, &data.x, y, xs, ys)?;
+    let mut chart = chart_in(&plot_area, &data.value_key, data, y, (xs, ys))?;
     let range = data.value_range();
     chart
         .draw_series(data.points.iter().map(|p| {
@@ -304,7 +363,17 @@ fn value_curve_panel<DB: DrawingBackend>(
     let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
     let vs = span(None, pts.iter().map(|p| p.1));
     let y = YAxis::Value(&data.value_key);
-    let mut chart = chart_in(area, &data.value_key, &data.x, y, xs, vs)?;
+    let mut chart = chart_in(area, &data.value_key, data, y, (xs, vs))?;
+    if pts.is_empty() {
+        let (w, h) = area.dim_in_pixel();
+        let note = format!("no case has a value of {} (yet)", data.value_key);
+        let style = (FONT, 15)
+            .into_font()
+            .color(&BLACK)
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        area.draw(&Text::new(note, (w as i32 / 2, h as i32 / 2), style))
+            .map_err(err)?;
+    }
     let line = rgb((31, 119, 180));
     chart
         .draw_series(LineSeries::new(pts.clone(), line.stroke_width(2)))
