@@ -470,3 +470,56 @@ fn collect_merges_a_partial_directory_and_lists_what_is_missing() {
         text(&refused.stderr)
     );
 }
+
+#[test]
+fn a_killed_sweep_stops_its_cases_and_resumes() {
+    let dir = scratch("killed");
+    let p = plan(
+        &dir,
+        "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 30\n[grid]\nalpha = [0.1, 0.2]\n",
+    );
+    let out_dir = dir.join("out");
+    let mut child = platefall()
+        .args([
+            "sweep",
+            p.to_str().unwrap(),
+            "--jobs",
+            "2",
+            "--progress",
+            "off",
+        ])
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let status_files = ["0000-alpha=0.1", "0001-alpha=0.2"]
+        .map(|id| out_dir.join("cases").join(id).join("status.json"));
+    let start = Instant::now();
+    while !status_files.iter().all(|f| f.exists()) {
+        assert!(
+            start.elapsed() < Duration::from_secs(60),
+            "the cases never started"
+        );
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::thread::sleep(Duration::from_millis(200));
+    child.kill().unwrap(); // SIGKILL: no chance to clean up
+    child.wait().unwrap();
+    // The cases get SIGINT when their parent dies: they finalise and exit.
+    for f in &status_files {
+        let s: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(f).unwrap()).unwrap();
+        let pid = s["pid"].as_i64().unwrap() as libc::pid_t;
+        let start = Instant::now();
+        while unsafe { libc::kill(pid, 0) } == 0 {
+            assert!(
+                start.elapsed() < Duration::from_secs(30),
+                "case pid {pid} outlived the sweep"
+            );
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+    let again = sweep(&[p.to_str().unwrap(), "--jobs", "2"]);
+    assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
+    assert!(rows(&out_dir).iter().all(|r| status_of(r) == "completed"));
+}
