@@ -3,6 +3,20 @@ use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
 
+/// Shown after `platefall sweep --help`.
+const AFTER_HELP: &str = "\
+A plan names a case, its fixed options ([fixed]), the swept ones ([grid]: every combination; [zip]: \
+advanced together; lists [a, b] or ranges { from = A, to = B, count = N, scale = \"log\" }), the \
+output directory, [outputs] recording, the [diagram] axes and value, and [slurm] resources. See \
+examples/sweep-static.toml and the README's \"Parameter sweeps\".
+
+A case is done when DIR/cases/<id>/summary.json says completed or diverged; rerunning the plan runs \
+only the others. Ctrl-C stops launching, lets the running cases finalise and merges the results.
+
+Exit codes: 0 every case completed; 2 bad plan or options (nothing is run or written); 3 the sweep \
+ended but some cases did not complete (listed, with why); 4 an output could not be written; 130 \
+interrupted.";
+
 /// Run a parameter sweep of one case from a plan file (TOML): locally with --jobs cases at once,
 /// or as a Slurm job array with --slurm; `collect` merges a directory's finished cases.
 ///
@@ -10,7 +24,11 @@ use clap::{Args, Subcommand, ValueEnum};
 /// sweep ended but some cases did not complete (listed, with why); 4 an output could not be
 /// written; 130 interrupted (the running cases are finalised and the results merged first).
 #[derive(Args, Debug)]
-#[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
+#[command(
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true,
+    after_long_help = AFTER_HELP
+)]
 pub struct SweepArgs {
     #[command(subcommand)]
     pub action: Option<SweepAction>,

@@ -362,7 +362,7 @@ fn diagram(raw: &RawDiagram, grid: &[Axis], zip: &[Axis], case: &str) -> Result<
 }
 
 /// Slurm strings end up in a shell script: refuse line breaks.
-fn check_slurm(s: &SlurmPlan) -> Result<(), String> {
+pub fn check_slurm(s: &SlurmPlan) -> Result<(), String> {
     let fields = [
         ("time", &s.time),
         ("memory", &s.memory),

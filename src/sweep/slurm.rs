@@ -141,6 +141,8 @@ pub fn submit_script(
     cases: &[CaseSpec],
     flags: &SlurmFlags,
 ) -> Result<u8, Failure> {
+    let res = resources(&plan.slurm, flags);
+    super::plan::check_slurm(&res).map_err(Failure::input)?;
     let exe = this_exe()?;
     std::fs::create_dir_all(layout.slurm_logs()).map_err(|e| {
         Failure::output(format!(
@@ -163,7 +165,6 @@ pub fn submit_script(
         );
         return Ok(0);
     }
-    let res = resources(&plan.slurm, flags);
     let text = script(layout, plan, &todo, &res, &exe.to_string_lossy());
     write_output(&path, text.as_bytes())?;
     if todo.last().is_some_and(|&i| i > DEFAULT_MAX_ARRAY_INDEX) {
