@@ -140,6 +140,25 @@ pub fn launch(
     })
 }
 
+/// Records in `status.json` that a case could not be started (best effort), and returns that status.
+pub fn launch_failed(layout: &Layout, case: &CaseSpec, err: &std::io::Error) -> CaseStatus {
+    let now = SystemTime::now();
+    let status = CaseStatus {
+        state: "exited".into(),
+        attempt: read_status(layout, &case.id).map_or(1, |s| s.attempt + 1),
+        host: hostname(),
+        started: utc(now),
+        started_unix: unix_seconds(now),
+        finished: Some(utc(now)),
+        message: format!("could not start: {err}"),
+        ..Default::default()
+    };
+    if let Ok(bytes) = serde_json::to_vec_pretty(&status) {
+        let _ = write_atomic(&layout.status(&case.id), &bytes);
+    }
+    status
+}
+
 /// On Linux, a case gets SIGINT when the sweep that started it dies (even by SIGKILL), so it
 /// finalises its outputs instead of running on unsupervised.
 fn stop_with_parent(cmd: &mut Command) {

@@ -7,11 +7,12 @@
 //! `phase.svg`, `phase.rrd`). A case is done when its summary exists at its final name and says
 //! `completed` or `diverged`; everything else is run again by the next sweep over the same plan.
 //!
-//! Files: `args` (command line), `plan` and `values` (the plan format), `validate` (the CLI's own
-//! validation of each case), `layout` (paths, manifest, lock), `fsutil` (atomic writes, times),
+//! Files: `args` (command line), `plan`, `values` and `cases` (the plan format and its cases),
+//! `validate` (the CLI's own validation of each case: the one file that calls into the CLI layer),
+//! `layout` (paths, manifest, lock), `fsutil` (atomic writes, times), `json` (ordered objects),
 //! `child` (one case as a child process), `runner` (the local pool), `progress`, `results`,
-//! `diagram` and `plot` (the figure), `recording` (the Rerun phase diagram), `slurm`, `commands`
-//! (the entry points).
+//! `diagram` and `plot` (the figure), `recording` (the Rerun phase diagram, behind the `viewer`
+//! feature), `slurm`, `commands` (the entry points).
 pub mod args;
 pub mod cases;
 pub mod child;

@@ -6,7 +6,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 use std::time::Duration;
 
-use super::child::{finish, interrupt, launch, Running};
+use super::child::{finish, interrupt, launch, launch_failed, Running};
 use super::layout::Layout;
 use super::plan::CaseSpec;
 use super::progress::Progress;
@@ -49,7 +49,11 @@ pub fn run_pool(
                     progress.started();
                     running.push(r);
                 }
-                Err(e) => progress.note(&format!("{}: could not start: {e}", case.id)),
+                Err(e) => {
+                    let status = launch_failed(layout, case, &e);
+                    progress.started();
+                    progress.finished(&case.id, "failed", &status);
+                }
             }
         }
         if running.is_empty() {
