@@ -134,6 +134,14 @@ pub struct Point {
     pub recording: Option<PathBuf>,
 }
 
+impl Point {
+    /// The value the second panel shows: only completed cases' (a diverged run's means are not
+    /// results).
+    pub fn shown_value(&self) -> Option<f64> {
+        self.value.filter(|_| self.status == "completed")
+    }
+}
+
 /// Everything the figure and the recording draw.
 #[derive(Clone, Debug)]
 pub struct DiagramData {
@@ -204,9 +212,9 @@ impl DiagramData {
         }
     }
 
-    /// The range of the chosen values over the cases that have one.
+    /// The range of the chosen values over the completed cases that have one.
     pub fn value_range(&self) -> Option<(f64, f64)> {
-        let vals = self.points.iter().filter_map(|p| p.value);
+        let vals = self.points.iter().filter_map(Point::shown_value);
         let (lo, hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
             (lo.min(v), hi.max(v))
         });
@@ -253,4 +261,115 @@ pub fn colour_map(s: f64) -> Rgb {
     let mix = |a: u8, b: u8| (a as f64 + t * (b as f64 - a as f64)).round() as u8;
     let (a, b) = (STOPS[i], STOPS[i + 1]);
     (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sweep::plan::parse;
+
+    /// Rows of a plan with the given regimes (None: no `regime` key) and statuses.
+    fn rows(plan: &Plan, regimes: &[(Option<&str>, &'static str)]) -> Vec<Row> {
+        plan.cases()
+            .into_iter()
+            .zip(regimes)
+            .map(|(case, (regime, status))| {
+                let mut summary = vec![("mean_omega".to_string(), serde_json::json!(case.index))];
+                if let Some(r) = regime {
+                    summary.push(("regime".to_string(), serde_json::json!(r)));
+                }
+                Row {
+                    case,
+                    status,
+                    exit_code: Some(0),
+                    message: String::new(),
+                    recording: None,
+                    summary,
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn points_take_the_summary_regime_or_n_a_and_the_chosen_axes() {
+        let plan = parse(
+            "case = \"free\"\n[grid]\nmass = [1, 2]\ninertia = { from = 0.01, to = 1, count = 3, scale = \"log\" }\n\
+             [diagram]\nx = \"inertia\"\ny = \"mass\"\n",
+            "t",
+        )
+        .unwrap();
+        let regimes = [
+            (Some("steady"), "completed"),
+            (Some("fluttering"), "completed"),
+            (Some("tumbling"), "completed"),
+            (Some("chaotic"), "completed"),
+            (None, "completed"),
+            (Some("tumbling"), "diverged"),
+        ];
+        let data = DiagramData::new(&plan, &rows(&plan, &regimes));
+        let got: Vec<&str> = data.points.iter().map(|p| p.regime.as_str()).collect();
+        assert_eq!(
+            got,
+            [
+                "steady",
+                "fluttering",
+                "tumbling",
+                "chaotic",
+                "n/a",
+                "tumbling"
+            ]
+        );
+        // x is inertia on a log axis: 0.01, 0.1, 1 → -2, -1, 0; y is mass.
+        let xy: Vec<(f64, f64)> = data.points.iter().map(|p| (p.x, p.y)).collect();
+        assert_eq!(xy[1], (-1.0, 1.0));
+        assert_eq!(xy[5], (0.0, 2.0));
+        assert_eq!(data.x.label(-1.0), "0.1");
+        assert_eq!(data.value_range(), Some((0.0, 5.0)));
+        assert_eq!(regime_colour("tumbling"), (255, 127, 14));
+        assert_eq!(regime_colour("autorotating"), OTHER_REGIME);
+    }
+
+    #[test]
+    fn text_values_make_a_categorical_axis() {
+        let plan = parse(
+            "case = \"free\"\n[grid]\npreset = [\"card\", \"none\"]\nmass = [1]\n",
+            "t",
+        )
+        .unwrap();
+        let data = DiagramData::new(
+            &plan,
+            &rows(&plan, &[(None, "completed"), (None, "missing")]),
+        );
+        assert_eq!(
+            data.x.categories.as_deref(),
+            Some(&["card".to_string(), "none".to_string()][..])
+        );
+        assert_eq!(
+            (data.points[1].x, data.x.label(1.0)),
+            (1.0, "none".to_string())
+        );
+        assert_eq!(span(Some(&data.x), std::iter::empty()), (-0.5, 1.5));
+    }
+
+    #[test]
+    fn figures_and_recording_are_written_for_every_kind_of_point() {
+        let plan = parse("case = \"free\"\n[grid]\nmass = [1, 2, 3]\n", "t").unwrap();
+        let regimes = [
+            (Some("steady"), "completed"),
+            (None, "failed"),
+            (None, "missing"),
+        ];
+        let data = DiagramData::new(&plan, &rows(&plan, &regimes));
+        let dir = std::env::temp_dir().join(format!("platefall-diagram-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let layout = crate::sweep::layout::Layout::new(&dir);
+        crate::sweep::plot::write_figures(&layout, &data).unwrap();
+        let png = std::fs::read(dir.join("phase.png")).unwrap();
+        assert_eq!(&png[1..4], b"PNG");
+        let svg = std::fs::read_to_string(dir.join("phase.svg")).unwrap();
+        assert!(svg.contains("motion regime") && svg.contains("steady (1)"));
+        #[cfg(feature = "viewer")]
+        crate::sweep::recording::write_recording(&layout, &data).unwrap();
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }

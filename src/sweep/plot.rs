@@ -306,12 +306,13 @@ fn value_map_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> R
     let range = data.value_range();
     chart
         .draw_series(data.points.iter().map(|p| {
-            let style = match (p.value, range) {
+            let style = match (p.shown_value(), range) {
                 (Some(v), Some((lo, hi))) => {
                     let s = if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
                     Style::Filled(colour_map(s))
                 }
-                _ => Style::Hollow,
+                _ if p.status == "completed" => Style::Hollow,
+                _ => key_style(&regime_key(p)),
             };
             point_element((p.x, p.y), style)
         }))
@@ -357,7 +358,7 @@ fn value_curve_panel<DB: DrawingBackend>(
     let mut pts: Vec<(f64, f64)> = data
         .points
         .iter()
-        .filter_map(|p| p.value.map(|v| (p.x, v)))
+        .filter_map(|p| p.shown_value().map(|v| (p.x, v)))
         .collect();
     pts.sort_by(|a, b| a.0.total_cmp(&b.0));
     let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));

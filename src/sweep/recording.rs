@@ -130,7 +130,7 @@ fn log_case(
             .with_show_labels(show),
     )?;
     rec.log_static(regime_path, &details)?;
-    let shade = match (p.value, range) {
+    let shade = match (p.shown_value(), range) {
         (Some(v), Some((lo, hi))) => colour_map(if hi > lo { (v - lo) / (hi - lo) } else { 0.5 }),
         _ => (200, 200, 200),
     };
