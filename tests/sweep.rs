@@ -170,6 +170,32 @@ fn four_cases_run_two_at_a_time_into_four_rows() {
     );
 }
 
+/// A sweep in the background, its output piped.
+fn spawn_sweep(plan: &Path, jobs: &str) -> std::process::Child {
+    platefall()
+        .args([
+            "sweep",
+            plan.to_str().unwrap(),
+            "--jobs",
+            jobs,
+            "--progress",
+            "off",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
+/// Polls `done` until it holds, failing after `seconds`.
+fn wait_until(seconds: u64, what: &str, done: impl Fn() -> bool) {
+    let start = Instant::now();
+    while !done() {
+        assert!(start.elapsed() < Duration::from_secs(seconds), "{what}");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
 fn mtime(p: &Path) -> SystemTime {
     std::fs::metadata(p)
         .and_then(|m| m.modified())
@@ -191,28 +217,9 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
         "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 30\n[grid]\nalpha = [0.1, 0.2, 0.3, 0.4]\n",
     );
     let out_dir = dir.join("out");
-    let child = platefall()
-        .args([
-            "sweep",
-            p.to_str().unwrap(),
-            "--jobs",
-            "1",
-            "--progress",
-            "off",
-        ])
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let child = spawn_sweep(&p, "1");
     let first = out_dir.join("cases/0000-alpha=0.1/summary.json");
-    let start = Instant::now();
-    while !first.exists() {
-        assert!(
-            start.elapsed() < Duration::from_secs(120),
-            "the first case never finished"
-        );
-        std::thread::sleep(Duration::from_millis(50));
-    }
+    wait_until(120, "the first case never finished", || first.exists());
     std::thread::sleep(Duration::from_millis(300)); // the second case is under way
     let second = sweep(&[p.to_str().unwrap(), "--jobs", "1"]);
     assert_eq!(
@@ -479,29 +486,12 @@ fn a_killed_sweep_stops_its_cases_and_resumes() {
         "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 30\n[grid]\nalpha = [0.1, 0.2]\n",
     );
     let out_dir = dir.join("out");
-    let mut child = platefall()
-        .args([
-            "sweep",
-            p.to_str().unwrap(),
-            "--jobs",
-            "2",
-            "--progress",
-            "off",
-        ])
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .unwrap();
+    let mut child = spawn_sweep(&p, "2");
     let status_files = ["0000-alpha=0.1", "0001-alpha=0.2"]
         .map(|id| out_dir.join("cases").join(id).join("status.json"));
-    let start = Instant::now();
-    while !status_files.iter().all(|f| f.exists()) {
-        assert!(
-            start.elapsed() < Duration::from_secs(60),
-            "the cases never started"
-        );
-        std::thread::sleep(Duration::from_millis(20));
-    }
+    wait_until(60, "the cases never started", || {
+        status_files.iter().all(|f| f.exists())
+    });
     std::thread::sleep(Duration::from_millis(200));
     child.kill().unwrap(); // SIGKILL: no chance to clean up
     child.wait().unwrap();
@@ -510,14 +500,8 @@ fn a_killed_sweep_stops_its_cases_and_resumes() {
         let s: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(f).unwrap()).unwrap();
         let pid = s["pid"].as_i64().unwrap() as libc::pid_t;
-        let start = Instant::now();
-        while unsafe { libc::kill(pid, 0) } == 0 {
-            assert!(
-                start.elapsed() < Duration::from_secs(30),
-                "case pid {pid} outlived the sweep"
-            );
-            std::thread::sleep(Duration::from_millis(50));
-        }
+        let gone = || unsafe { libc::kill(pid, 0) } != 0;
+        wait_until(30, &format!("case pid {pid} outlived the sweep"), gone);
     }
     let again = sweep(&[p.to_str().unwrap(), "--jobs", "2"]);
     assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
