@@ -220,7 +220,10 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
     let child = spawn_sweep(&p, "1");
     let first = out_dir.join("cases/0000-alpha=0.1/summary.json");
     wait_until(120, "the first case never finished", || first.exists());
-    std::thread::sleep(Duration::from_millis(300)); // the second case is under way
+    let second_case = out_dir.join("cases/0001-alpha=0.2/status.json");
+    wait_until(120, "the second case never started", || {
+        second_case.exists()
+    });
     let second = sweep(&[p.to_str().unwrap(), "--jobs", "1"]);
     assert_eq!(
         second.status.code(),
