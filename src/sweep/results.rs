@@ -33,7 +33,12 @@ pub fn outcome(layout: &Layout, id: &str, status: Option<&CaseStatus>) -> &'stat
     match (summary.as_deref(), status) {
         (Some("completed"), _) => "completed",
         (Some("diverged"), _) => "diverged",
-        (_, Some(s)) if s.state == "exited" && s.exit_code == Some(130) => "interrupted",
+        // Exit 130 after Ctrl-C, or killed by SIGINT before its handler was installed.
+        (_, Some(s))
+            if s.state == "exited" && (s.exit_code == Some(130) || s.signal == Some(2)) =>
+        {
+            "interrupted"
+        }
         (_, Some(s)) if s.state == "exited" => "failed",
         (Some("interrupted"), _) => "interrupted",
         (_, Some(_)) => "unfinished",
