@@ -334,7 +334,11 @@ fn diagram(raw: &RawDiagram, grid: &[Axis], zip: &[Axis], case: &str) -> Result<
     };
     let x = pick("x", &raw.x, names.first().copied())?.unwrap_or_default();
     let y_default = names.iter().copied().find(|n| *n != x);
-    let y = pick("y", &raw.y, y_default)?;
+    // `y = ""` asks for a one-parameter diagram even when more options are swept.
+    let y = match raw.y.as_deref() {
+        Some("") => None,
+        _ => pick("y", &raw.y, y_default)?,
+    };
     if y.as_deref() == Some(x.as_str()) {
         return Err(format!(
             "[diagram] x and y are both \"{x}\": choose two different swept options"

@@ -136,6 +136,11 @@ fn the_diagram_defaults_to_the_first_two_swept_options() {
         (None, "mean_cl")
     );
     assert_eq!(one.name, "t");
+    let strip = parse(
+        "case = \"static\"\n[grid]\nalpha = [0.1]\nre = [100]\n[diagram]\ny = \"\"\n",
+        "t",
+    );
+    assert_eq!(strip.unwrap().diagram.y, None);
 }
 
 #[test]
