@@ -8,7 +8,8 @@
 //! 2. Run description — [`config`]: presets and physical units behind a run's numbers.
 //! 3. Post-processing — [`post`]: the summary and report of a run, pictures of its fields.
 //! 4. Recording — [`record`]: the logger thread, CSV, progress and (feature `viewer`) Rerun.
-//! 5. Command line — [`cli`] (the only layer that knows clap) and [`bench`].
+//! 5. Command line — [`cli`] (the only layer that knows clap), [`bench`], and [`sweep`] (parameter
+//!    sweeps: many runs of this program, locally or as a Slurm job array).
 //!
 //! Run a case from Rust with [`sim::Simulation`]; see `examples/static_drag.rs`.
 pub mod param;
@@ -26,3 +27,4 @@ pub mod record;
 
 pub mod bench;
 pub mod cli;
+pub mod sweep;

@@ -12,6 +12,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::Bench(args) => run_bench(args).map(|_| ExitCode::SUCCESS),
+        Command::Sweep(args) => return platefall::sweep::main(args),
         cmd => run_case(cmd),
     };
     match result {

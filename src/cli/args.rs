@@ -295,6 +295,7 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
             coupled_config(&a.solver, &a.body, case, 80.0, turns)?
         }
         Command::Bench(_) => return Err(ArgError::NotACase("bench")),
+        Command::Sweep(_) => return Err(ArgError::NotACase("sweep")),
     };
     cfg.validate()?;
     Ok(cfg)

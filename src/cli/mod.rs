@@ -45,6 +45,9 @@ pub enum Command {
     Free(FreeArgs),
     /// Time the flow step alone on several grid sizes (ns per cell per step, momentum vs pressure).
     Bench(BenchArgs),
+    /// Run a parameter sweep from a plan file, locally or as a Slurm job array, and merge it into
+    /// a results table and a phase diagram.
+    Sweep(crate::sweep::SweepArgs),
 }
 
 impl Command {
@@ -55,7 +58,7 @@ impl Command {
             Command::Forced(a) => Some((&a.solver, &a.record)),
             Command::Pinned(a) => Some((&a.solver, &a.record)),
             Command::Free(a) => Some((&a.solver, &a.record)),
-            Command::Bench(_) => None,
+            Command::Bench(_) | Command::Sweep(_) => None,
         }
     }
 }

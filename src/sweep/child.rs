@@ -1,0 +1,268 @@
+//! One case as a child process: its argument vector with the sweep's outputs, its log, its
+//! `status.json` (attempt, host, start, end, exit code, the last error line) and whether it is done.
+use std::fs::OpenOptions;
+use std::io::{Read, Seek, SeekFrom, Write};
+use std::path::Path;
+use std::process::{Child, Command, ExitStatus, Stdio};
+use std::time::{Instant, SystemTime};
+
+use serde::{Deserialize, Serialize};
+
+use super::fsutil::{hostname, unix_seconds, utc, write_atomic};
+use super::layout::Layout;
+use super::plan::CaseSpec;
+
+/// What `status.json` says about a case's last attempt.
+#[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
+pub struct CaseStatus {
+    /// "running" while the attempt runs, "exited" after it.
+    pub state: String,
+    pub attempt: u32,
+    pub host: String,
+    pub pid: u32,
+    pub started: String,
+    pub started_unix: f64,
+    #[serde(default)]
+    pub finished: Option<String>,
+    /// Wall time of the child process, seconds.
+    #[serde(default)]
+    pub elapsed_seconds: Option<f64>,
+    #[serde(default)]
+    pub exit_code: Option<i32>,
+    /// The signal that ended the process, if one did.
+    #[serde(default)]
+    pub signal: Option<i32>,
+    /// The last error line of the attempt's log (or what ended it).
+    #[serde(default)]
+    pub message: String,
+}
+
+/// Reads a case's `status.json`, if there is a readable one.
+pub fn read_status(layout: &Layout, id: &str) -> Option<CaseStatus> {
+    let text = std::fs::read_to_string(layout.status(id)).ok()?;
+    serde_json::from_str(&text).ok()
+}
+
+/// The `status` of a case's summary, if the summary exists at its final name.
+pub fn summary_status(layout: &Layout, id: &str) -> Option<String> {
+    let text = std::fs::read_to_string(layout.summary(id)).ok()?;
+    let v: serde_json::Value = serde_json::from_str(&text).ok()?;
+    v.get("status")?.as_str().map(str::to_string)
+}
+
+/// A case is done when its summary says completed or diverged (a finished failure); an
+/// interrupted or missing summary means it runs again.
+pub fn is_done(layout: &Layout, id: &str) -> bool {
+    matches!(
+        summary_status(layout, id).as_deref(),
+        Some("completed" | "diverged")
+    )
+}
+
+/// The full argument vector of a case: its options plus the outputs the sweep manages.
+pub fn full_args(layout: &Layout, case: &CaseSpec, recording: bool) -> Vec<String> {
+    let path = |p: std::path::PathBuf| p.to_string_lossy().into_owned();
+    let mut args = case.args.clone();
+    args.push(format!("--summary={}", path(layout.summary(&case.id))));
+    args.push(format!("--csv={}", path(layout.csv(&case.id))));
+    args.push("--progress=off".into());
+    if recording {
+        args.push(format!("--save={}", path(layout.recording(&case.id))));
+    } else {
+        args.push("--no-save".into());
+    }
+    args
+}
+
+/// A running case.
+pub struct Running {
+    pub case: CaseSpec,
+    pub child: Child,
+    pub status: CaseStatus,
+    started: Instant,
+    /// Where the child's own lines start in the log.
+    log_start: u64,
+}
+
+/// Starts a case: removes a stale summary, appends an attempt header to its log, records
+/// `status.json` as running, and spawns `exe` with the case's arguments.
+pub fn launch(
+    exe: &Path,
+    layout: &Layout,
+    case: &CaseSpec,
+    recording: bool,
+) -> std::io::Result<Running> {
+    let id = &case.id;
+    std::fs::create_dir_all(layout.case_dir(id))?;
+    match std::fs::remove_file(layout.summary(id)) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(e),
+        _ => {}
+    }
+    let attempt = read_status(layout, id).map_or(1, |s| s.attempt + 1);
+    let args = full_args(layout, case, recording);
+    let mut log = OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(layout.log(id))?;
+    let now = SystemTime::now();
+    writeln!(
+        log,
+        "==== platefall sweep: case {id}, attempt {attempt}, {} on {}\n$ {} {}",
+        utc(now),
+        hostname(),
+        exe.display(),
+        args.join(" ")
+    )?;
+    let log_start = log.seek(SeekFrom::End(0))?;
+    let mut cmd = Command::new(exe);
+    cmd.args(&args)
+        .stdin(Stdio::null())
+        .stdout(log.try_clone()?)
+        .stderr(log);
+    stop_with_parent(&mut cmd);
+    let child = cmd.spawn()?;
+    let status = CaseStatus {
+        state: "running".into(),
+        attempt,
+        host: hostname(),
+        pid: child.id(),
+        started: utc(now),
+        started_unix: unix_seconds(now),
+        ..Default::default()
+    };
+    write_atomic(&layout.status(id), &serde_json::to_vec_pretty(&status)?)?;
+    Ok(Running {
+        case: case.clone(),
+        child,
+        status,
+        started: Instant::now(),
+        log_start,
+    })
+}
+
+/// Records in `status.json` that a case could not be started (best effort), and returns that status.
+pub fn launch_failed(layout: &Layout, case: &CaseSpec, err: &std::io::Error) -> CaseStatus {
+    let now = SystemTime::now();
+    let status = CaseStatus {
+        state: "exited".into(),
+        attempt: read_status(layout, &case.id).map_or(1, |s| s.attempt + 1),
+        host: hostname(),
+        started: utc(now),
+        started_unix: unix_seconds(now),
+        finished: Some(utc(now)),
+        message: format!("could not start: {err}"),
+        ..Default::default()
+    };
+    if let Ok(bytes) = serde_json::to_vec_pretty(&status) {
+        let _ = write_atomic(&layout.status(&case.id), &bytes);
+    }
+    status
+}
+
+/// On Linux, a case gets SIGINT when the sweep that started it dies (even by SIGKILL), so it
+/// finalises its outputs instead of running on unsupervised.
+fn stop_with_parent(cmd: &mut Command) {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::unix::process::CommandExt;
+        // SAFETY: prctl is async-signal-safe and touches no memory of the parent.
+        unsafe {
+            cmd.pre_exec(|| {
+                if libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGINT) != 0 {
+                    return Err(std::io::Error::last_os_error());
+                }
+                Ok(())
+            });
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    let _ = cmd;
+}
+
+/// Sends SIGINT (Ctrl-C) to a running case, or kills it where there are no signals.
+pub fn interrupt(r: &mut Running, hard: bool) {
+    #[cfg(unix)]
+    {
+        let sig = if hard { libc::SIGKILL } else { libc::SIGINT };
+        // SAFETY: kill(2) on our own child's pid; it has not been reaped yet.
+        unsafe {
+            libc::kill(r.child.id() as libc::pid_t, sig);
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = hard;
+        let _ = r.child.kill();
+    }
+}
+
+/// Records how a case ended in its `status.json`, and returns that status.
+pub fn finish(layout: &Layout, mut r: Running, exit: ExitStatus) -> CaseStatus {
+    let id = r.case.id.clone();
+    let now = SystemTime::now();
+    r.status.state = "exited".into();
+    r.status.finished = Some(utc(now));
+    r.status.elapsed_seconds = Some(r.started.elapsed().as_secs_f64());
+    r.status.exit_code = exit.code();
+    r.status.signal = exit_signal(&exit);
+    r.status.message = match r.status.signal {
+        Some(sig) => format!("killed by signal {sig}"),
+        None if exit.success() => String::new(),
+        None => last_error_line(&layout.log(&id), r.log_start),
+    };
+    if let Ok(bytes) = serde_json::to_vec_pretty(&r.status) {
+        if let Err(e) = write_atomic(&layout.status(&id), &bytes) {
+            eprintln!(
+                "warning: cannot write {}: {e}",
+                layout.status(&id).display()
+            );
+        }
+    }
+    r.status
+}
+
+fn exit_signal(exit: &ExitStatus) -> Option<i32> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::ExitStatusExt;
+        exit.signal()
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = exit;
+        None
+    }
+}
+
+/// The attempt's last `error:` line, else its last `interrupted` line, else its last line.
+pub fn last_error_line(log: &Path, from: u64) -> String {
+    let mut text = String::new();
+    if let Ok(mut f) = std::fs::File::open(log) {
+        if f.seek(SeekFrom::Start(from)).is_ok() {
+            let _ = f.read_to_string(&mut text);
+        }
+    }
+    let lines: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect();
+    let pick = lines
+        .iter()
+        .rev()
+        .find(|l| l.starts_with("error:"))
+        .or_else(|| lines.iter().rev().find(|l| l.starts_with("interrupted")))
+        .or_else(|| lines.last())
+        .copied()
+        .unwrap_or("");
+    let mut line = pick.to_string();
+    if line.len() > 300 {
+        let cut = (0..=300)
+            .rev()
+            .find(|&i| line.is_char_boundary(i))
+            .unwrap_or(0);
+        line.truncate(cut);
+        line.push('…');
+    }
+    line
+}

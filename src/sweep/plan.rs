@@ -1,0 +1,395 @@
+//! The sweep plan (a TOML file): which case, the fixed options, the swept ones (a full grid and/or
+//! a zipped group), the output directory, the per-case outputs, the phase diagram and the Slurm
+//! resources. Parsing checks everything that can be checked before a case runs; every error is one
+//! line naming the plan, the value and what is accepted.
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+use super::validate::{self, OptionInfo, CASES, MANAGED};
+use super::values::{expand, one_line, Scale, Value};
+
+/// `[outputs]`: what each case writes besides its summary, CSV and log.
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct Outputs {
+    /// Also write each case's Rerun recording, `cases/<id>/run.rrd`.
+    #[serde(default)]
+    pub recording: bool,
+}
+
+/// `[diagram]` as written.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+struct RawDiagram {
+    x: Option<String>,
+    y: Option<String>,
+    value: Option<String>,
+    x_scale: Option<Scale>,
+    y_scale: Option<Scale>,
+}
+
+/// The phase diagram: two swept options as axes, and the summary key of the second panel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagram {
+    pub x: String,
+    pub y: Option<String>,
+    pub value: String,
+    pub x_scale: Scale,
+    pub y_scale: Scale,
+}
+
+/// `[slurm]`: resources of each array task (command-line flags override them).
+#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+pub struct SlurmPlan {
+    /// Wall-time limit per case, as sbatch takes it (e.g. "01:00:00").
+    pub time: Option<String>,
+    /// Memory per case, as sbatch takes it (e.g. "2G").
+    pub memory: Option<String>,
+    /// CPUs per case.
+    pub cpus: Option<u32>,
+    pub partition: Option<String>,
+    /// At most this many array tasks at once (`--array=...%N`).
+    pub max_parallel: Option<u32>,
+    /// Extra sbatch options, one per line, e.g. "--account=abc" (written as `#SBATCH --account=abc`).
+    #[serde(default)]
+    pub sbatch: Vec<String>,
+    /// Shell lines run before each case, e.g. "module load gcc".
+    #[serde(default)]
+    pub setup: Vec<String>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "kebab-case")]
+struct RawPlan {
+    case: String,
+    name: Option<String>,
+    output: Option<PathBuf>,
+    #[serde(default)]
+    fixed: toml::Table,
+    #[serde(default)]
+    grid: toml::Table,
+    #[serde(default)]
+    zip: toml::Table,
+    #[serde(default)]
+    outputs: Outputs,
+    #[serde(default)]
+    diagram: RawDiagram,
+    #[serde(default)]
+    slurm: SlurmPlan,
+}
+
+/// One swept option and its values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Axis {
+    pub name: String,
+    pub values: Vec<Value>,
+    pub scale: Scale,
+}
+
+/// A checked plan.
+#[derive(Clone, Debug)]
+pub struct Plan {
+    /// Used in titles and job names: `name`, or the plan file's stem.
+    pub name: String,
+    pub case: String,
+    /// The output directory as written (None: give --output).
+    pub output: Option<PathBuf>,
+    pub fixed: Vec<(String, Value)>,
+    /// Full-grid options, outermost first.
+    pub grid: Vec<Axis>,
+    /// Zipped options (advanced together; innermost).
+    pub zip: Vec<Axis>,
+    pub outputs: Outputs,
+    pub diagram: Diagram,
+    pub slurm: SlurmPlan,
+    /// The plan file's text, copied into the sweep directory.
+    pub text: String,
+}
+
+/// One case of a sweep.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CaseSpec {
+    pub index: usize,
+    /// Stable and readable, e.g. `0003-alpha=0.4-re=1000`.
+    pub id: String,
+    /// The swept options' values.
+    pub params: Vec<(String, Value)>,
+    /// The case's own options (`[case, --opt=value, ...]`), without the outputs the sweep adds.
+    pub args: Vec<String>,
+}
+
+/// Reads and checks a plan file.
+pub fn load(path: &Path) -> Result<Plan, String> {
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|e| format!("plan {shown}: {e}"))?;
+    let stem = path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "sweep".into());
+    parse(&text, &stem).map_err(|e| format!("plan {shown}: {e}"))
+}
+
+/// Parses and checks a plan's text (`stem` names it when it has no `name`).
+pub fn parse(text: &str, stem: &str) -> Result<Plan, String> {
+    let raw: RawPlan = toml::from_str(text).map_err(|e| toml_error(&e, text))?;
+    if !CASES.contains(&raw.case.as_str()) {
+        return Err(format!(
+            "case = \"{}\" is not a case: accepted {}",
+            raw.case,
+            CASES.join(", ")
+        ));
+    }
+    let known = validate::case_options(&raw.case).unwrap_or_default();
+    let mut seen = Vec::new();
+    let fixed = fixed_options(&raw.fixed, &known, &raw.case, &mut seen)?;
+    let grid = axes(&raw.grid, "grid", &known, &raw.case, &mut seen)?;
+    let zip = axes(&raw.zip, "zip", &known, &raw.case, &mut seen)?;
+    check_zip(&zip)?;
+    let diagram = diagram(&raw.diagram, &grid, &zip, &raw.case)?;
+    let name = raw.name.clone().unwrap_or_else(|| stem.to_string());
+    let plan = Plan {
+        name,
+        case: raw.case,
+        output: raw.output,
+        fixed,
+        grid,
+        zip,
+        outputs: raw.outputs,
+        diagram,
+        slurm: raw.slurm,
+        text: text.to_string(),
+    };
+    check_slurm(&plan.slurm)?;
+    Ok(plan)
+}
+
+/// A TOML error on one line, with its line number.
+fn toml_error(e: &toml::de::Error, text: &str) -> String {
+    let msg = one_line(e.message());
+    match e.span() {
+        Some(span) => {
+            let line = text[..span.start.min(text.len())].matches('\n').count() + 1;
+            format!("line {line}: {msg}")
+        }
+        None => msg,
+    }
+}
+
+/// An option name as on the command line: `t_end` and `--t-end` are `t-end`.
+fn normalise(name: &str) -> String {
+    name.trim_start_matches("--").replace('_', "-")
+}
+
+/// Checks an option name against the case's options and the ones already given.
+fn check_name(
+    raw: &str,
+    table: &str,
+    known: &[OptionInfo],
+    case: &str,
+    seen: &mut Vec<(String, String)>,
+) -> Result<OptionInfo, String> {
+    let name = normalise(raw);
+    if MANAGED.contains(&name.as_str()) {
+        return Err(format!(
+            "[{table}] {raw}: the sweep sets --{name} itself for every case (under DIR/cases/<id>/); remove it"
+        ));
+    }
+    let Some(info) = known.iter().find(|o| o.name == name) else {
+        let accepted: Vec<&str> = known
+            .iter()
+            .map(|o| o.name.as_str())
+            .filter(|n| !MANAGED.contains(n))
+            .collect();
+        return Err(format!(
+            "[{table}] {raw}: `{case}` has no option --{name}: accepted {}",
+            accepted.join(", ")
+        ));
+    };
+    if let Some((_, other)) = seen.iter().find(|(n, _)| *n == name) {
+        return Err(format!(
+            "[{table}] {raw}: option --{name} is already given in [{other}]; give each option once"
+        ));
+    }
+    seen.push((name, table.to_string()));
+    Ok(info.clone())
+}
+
+/// A value's type against the option's: flags take true/false, other options anything else.
+fn check_kind(info: &OptionInfo, v: &Value, what: &str) -> Result<(), String> {
+    match (info.takes_value, v) {
+        (false, Value::Bool(_)) => Ok(()),
+        (false, other) => Err(format!(
+            "{what} = {}: --{} is a flag: accepted true or false",
+            other.arg(),
+            info.name
+        )),
+        (true, Value::Bool(b)) => Err(format!(
+            "{what} = {b}: --{} takes a value, not true/false",
+            info.name
+        )),
+        (true, _) => Ok(()),
+    }
+}
+
+/// `[fixed]`: one value per option.
+fn fixed_options(
+    table: &toml::Table,
+    known: &[OptionInfo],
+    case: &str,
+    seen: &mut Vec<(String, String)>,
+) -> Result<Vec<(String, Value)>, String> {
+    let mut out = Vec::new();
+    for (raw, v) in table {
+        let info = check_name(raw, "fixed", known, case, seen)?;
+        let what = format!("[fixed] {raw}");
+        if matches!(v, toml::Value::Array(_) | toml::Value::Table(_)) {
+            return Err(format!(
+                "{what}: [fixed] takes one value per option; sweep lists and ranges in [grid] or [zip]"
+            ));
+        }
+        let value = Value::from_toml(v, &what)?;
+        check_kind(&info, &value, &what)?;
+        out.push((info.name, value));
+    }
+    Ok(out)
+}
+
+/// `[grid]` or `[zip]`: the swept options in file order.
+fn axes(
+    table: &toml::Table,
+    section: &str,
+    known: &[OptionInfo],
+    case: &str,
+    seen: &mut Vec<(String, String)>,
+) -> Result<Vec<Axis>, String> {
+    let mut out = Vec::new();
+    for (raw, v) in table {
+        let info = check_name(raw, section, known, case, seen)?;
+        let what = format!("[{section}] {raw}");
+        let (values, scale) = expand(v, &what)?;
+        for value in &values {
+            check_kind(&info, value, &what)?;
+        }
+        out.push(Axis {
+            name: info.name,
+            values,
+            scale,
+        });
+    }
+    Ok(out)
+}
+
+/// Zipped options advance together, so their lists must have one length.
+fn check_zip(zip: &[Axis]) -> Result<(), String> {
+    let Some(first) = zip.first() else {
+        return Ok(());
+    };
+    for a in &zip[1..] {
+        if a.values.len() != first.values.len() {
+            return Err(format!(
+                "[zip] {} has {} values but {} has {}: zipped options need equally many values",
+                a.name,
+                a.values.len(),
+                first.name,
+                first.values.len()
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The summary key shown by default in the second panel.
+fn default_value_key(case: &str) -> &'static str {
+    match case {
+        "static" => "mean_cl",
+        "forced" => "mean_cm",
+        _ => "mean_omega",
+    }
+}
+
+/// `[diagram]`: axes default to the first two swept options.
+fn diagram(raw: &RawDiagram, grid: &[Axis], zip: &[Axis], case: &str) -> Result<Diagram, String> {
+    let swept: Vec<&Axis> = grid.iter().chain(zip).collect();
+    if swept.is_empty() {
+        return Err(
+            "nothing is swept: give at least one option in [grid] or [zip] (e.g. alpha = [0.2, 0.4])"
+                .into(),
+        );
+    }
+    let names: Vec<&str> = swept.iter().map(|a| a.name.as_str()).collect();
+    let pick = |key: &str, given: &Option<String>, default: Option<&str>| match given {
+        Some(n) => {
+            let n = normalise(n);
+            match swept.iter().find(|a| a.name == n) {
+                Some(a) => Ok(Some(a.name.clone())),
+                None => Err(format!(
+                    "[diagram] {key} = \"{n}\" is not a swept option: accepted {}",
+                    names.join(", ")
+                )),
+            }
+        }
+        None => Ok(default.map(str::to_string)),
+    };
+    let x = pick("x", &raw.x, names.first().copied())?.unwrap_or_default();
+    let y_default = names.iter().copied().find(|n| *n != x);
+    // `y = ""` asks for a one-parameter diagram even when more options are swept.
+    let y = match raw.y.as_deref() {
+        Some("") => None,
+        _ => pick("y", &raw.y, y_default)?,
+    };
+    if y.as_deref() == Some(x.as_str()) {
+        return Err(format!(
+            "[diagram] x and y are both \"{x}\": choose two different swept options"
+        ));
+    }
+    let scale_of = |name: &str| {
+        swept
+            .iter()
+            .find(|a| a.name == name)
+            .map(|a| a.scale)
+            .unwrap_or_default()
+    };
+    Ok(Diagram {
+        x_scale: raw.x_scale.unwrap_or_else(|| scale_of(&x)),
+        y_scale: raw
+            .y_scale
+            .unwrap_or_else(|| y.as_deref().map(scale_of).unwrap_or_default()),
+        value: raw
+            .value
+            .clone()
+            .unwrap_or_else(|| default_value_key(case).to_string()),
+        x,
+        y,
+    })
+}
+
+/// Slurm strings end up in a shell script: refuse line breaks.
+pub fn check_slurm(s: &SlurmPlan) -> Result<(), String> {
+    let fields = [
+        ("time", &s.time),
+        ("memory", &s.memory),
+        ("partition", &s.partition),
+    ];
+    for (key, v) in fields {
+        if let Some(v) = v {
+            if v.is_empty() || v.contains(['\n', '\r', ' ']) {
+                return Err(format!(
+                    "[slurm] {key} = {v:?}: accepted one word as sbatch takes it (e.g. time = \"01:00:00\", memory = \"2G\")"
+                ));
+            }
+        }
+    }
+    if s.cpus == Some(0) || s.max_parallel == Some(0) {
+        return Err("[slurm] cpus and max-parallel: accepted 1 or more".into());
+    }
+    for line in s.sbatch.iter().chain(&s.setup) {
+        if line.contains(['\n', '\r']) {
+            return Err(format!(
+                "[slurm] {line:?}: one line per entry (no line breaks)"
+            ));
+        }
+    }
+    Ok(())
+}

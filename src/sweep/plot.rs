@@ -1,0 +1,389 @@
+//! The phase-diagram figure (`phase.png`, `phase.svg`) drawn with plotters: on the left the cases
+//! in the plane of two swept options coloured by motion regime; on the right the chosen summary
+//! value (a colour map in the plane, or a curve for a one-parameter sweep). Text is rendered with
+//! the DejaVu Sans font compiled into the binary, so no system font library is needed.
+use plotters::coord::types::RangedCoordf64;
+use plotters::coord::Shift;
+use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
+use super::diagram::{
+    colour_map, regime_colour, short_number, span, DiagramData, PlotAxis, Point, Rgb, FAILED,
+    REGIMES,
+};
+use super::fsutil::write_output;
+use super::layout::Layout;
+use super::Failure;
+
+/// Figure size in pixels.
+const SIZE: (u32, u32) = (1280, 560);
+const FONT: &str = "sans-serif";
+
+fn rgb(c: Rgb) -> RGBColor {
+    RGBColor(c.0, c.1, c.2)
+}
+
+/// Registers the embedded font once (plotters' ab_glyph text needs it).
+fn register_font() {
+    static ONCE: std::sync::Once = std::sync::Once::new();
+    ONCE.call_once(|| {
+        let _ = plotters::style::register_font(FONT, FontStyle::Normal, dejavu::sans::regular());
+    });
+}
+
+/// Writes `phase.svg` and `phase.png` (each atomically).
+pub fn write_figures(layout: &Layout, data: &DiagramData) -> Result<(), Failure> {
+    register_font();
+    let fail = |e: String| Failure::output(format!("drawing the phase diagram: {e}"));
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
+        draw(&root, data).map_err(fail)?;
+    }
+    write_output(&layout.output("phase.svg"), svg.as_bytes())?;
+    let mut pixels = vec![0u8; (SIZE.0 * SIZE.1 * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
+        draw(&root, data).map_err(fail)?;
+    }
+    let png = encode_png(&pixels, SIZE).map_err(fail)?;
+    write_output(&layout.output("phase.png"), &png)
+}
+
+/// RGB pixels as a PNG file.
+fn encode_png(pixels: &[u8], (w, h): (u32, u32)) -> Result<Vec<u8>, String> {
+    let mut out = Vec::new();
+    let mut enc = png::Encoder::new(&mut out, w, h);
+    enc.set_color(png::ColorType::Rgb);
+    enc.set_depth(png::BitDepth::Eight);
+    let mut writer = enc.write_header().map_err(|e| e.to_string())?;
+    writer.write_image_data(pixels).map_err(|e| e.to_string())?;
+    writer.finish().map_err(|e| e.to_string())?;
+    Ok(out)
+}
+
+type Area<'a, DB> = DrawingArea<DB, Shift>;
+
+fn err<E: std::fmt::Debug>(e: E) -> String {
+    format!("{e:?}")
+}
+
+/// The whole figure: a title over the two panels.
+fn draw<DB: DrawingBackend>(root: &Area<DB>, data: &DiagramData) -> Result<(), String> {
+    root.fill(&WHITE).map_err(err)?;
+    let (top, body) = root.split_vertically(44);
+    top.draw(&Text::new(
+        data.title.clone(),
+        (20, 12),
+        (FONT, 22).into_font().color(&BLACK),
+    ))
+    .map_err(err)?;
+    let (left, right) = body.split_horizontally(SIZE.0 / 2);
+    regime_panel(&left, data)?;
+    if data.y.is_some() {
+        value_map_panel(&right, data)?;
+    } else {
+        value_curve_panel(&right, data)?;
+    }
+    root.present().map_err(err)
+}
+
+/// How a case is drawn in the regime panel, and its legend entry.
+fn regime_key(p: &Point) -> String {
+    match p.status {
+        "completed" => p.regime.clone(),
+        "diverged" | "failed" => "diverged / failed".into(),
+        _ => "not run / unfinished".into(),
+    }
+}
+
+/// What a panel's vertical axis shows.
+#[derive(Clone, Copy)]
+enum YAxis<'a> {
+    /// A swept option.
+    Param(&'a PlotAxis),
+    /// A summary value.
+    Value(&'a str),
+    /// Nothing (a one-parameter regime strip).
+    Strip,
+}
+
+type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+/// Most swept values labelled one by one on an axis; with more, plotters places the ticks.
+const MAX_SWEPT_TICKS: usize = 12;
+
+/// The distinct positions of the cases along an axis, when few enough to label each.
+fn swept_ticks(positions: impl Iterator<Item = f64>) -> Option<Vec<f64>> {
+    let mut v: Vec<f64> = positions.collect();
+    v.sort_by(f64::total_cmp);
+    v.dedup_by(|a, b| (*a - *b).abs() <= 1e-9 * b.abs().max(1.0));
+    (!v.is_empty() && v.len() <= MAX_SWEPT_TICKS).then_some(v)
+}
+
+/// A panel with its caption, axes, grid and tick labels (at the swept values when there are few).
+fn chart_in<'a, DB: DrawingBackend>(
+    area: &'a Area<DB>,
+    caption: &str,
+    data: &DiagramData,
+    y: YAxis,
+    ranges: ((f64, f64), (f64, f64)),
+) -> Result<Chart<'a, DB>, String> {
+    let (xs, ys) = ranges;
+    let x = &data.x;
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, (FONT, 18))
+        .margin(12)
+        .x_label_area_size(46)
+        .y_label_area_size(if matches!(y, YAxis::Strip) { 10 } else { 64 })
+        .build_cartesian_2d(xs.0..xs.1, ys.0..ys.1)
+        .map_err(err)?;
+    let x_ticks = swept_ticks(data.points.iter().map(|p| p.x));
+    let y_ticks = match y {
+        YAxis::Param(_) => swept_ticks(data.points.iter().map(|p| p.y)),
+        _ => None,
+    };
+    let x_fmt = |v: &f64| x.label(*v);
+    let y_fmt = |v: &f64| match y {
+        YAxis::Param(a) => a.label(*v),
+        _ => short_number(*v),
+    };
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(x.title())
+        .x_label_formatter(&x_fmt)
+        .y_label_formatter(&y_fmt)
+        .label_style((FONT, 13))
+        .axis_desc_style((FONT, 15))
+        .light_line_style(RGBColor(242, 242, 242));
+    if x_ticks.is_some() {
+        mesh.x_labels(0);
+    }
+    match y {
+        YAxis::Param(a) => {
+            mesh.y_desc(a.title());
+            if y_ticks.is_some() {
+                mesh.y_labels(0);
+            }
+        }
+        YAxis::Value(key) => {
+            mesh.y_desc(key);
+        }
+        YAxis::Strip => {
+            mesh.disable_y_axis().disable_y_mesh();
+        }
+    }
+    mesh.draw().map_err(err)?;
+    if let Some(t) = &x_ticks {
+        label_ticks(area, &mut chart, t, |p| (p, ys.0), |p| x.label(p))?;
+    }
+    if let (Some(t), YAxis::Param(a)) = (&y_ticks, y) {
+        label_ticks(area, &mut chart, t, |p| (xs.0, p), |p| a.label(p))?;
+    }
+    Ok(chart)
+}
+
+/// Grid lines and labels at given positions along one axis: `at` places a position on the axis
+/// line (the other coordinate at its lower end).
+fn label_ticks<DB: DrawingBackend>(
+    area: &Area<DB>,
+    chart: &mut Chart<'_, DB>,
+    positions: &[f64],
+    at: impl Fn(f64) -> (f64, f64),
+    label: impl Fn(f64) -> String,
+) -> Result<(), String> {
+    let (xr, yr) = (chart.x_range(), chart.y_range());
+    let base = area.get_base_pixel();
+    for &p in positions {
+        let (x, y) = at(p);
+        let vertical = y == yr.start;
+        let line = if vertical {
+            vec![(x, yr.start), (x, yr.end)]
+        } else {
+            vec![(xr.start, y), (xr.end, y)]
+        };
+        chart
+            .draw_series(LineSeries::new(line, RGBColor(200, 200, 200)))
+            .map_err(err)?;
+        let (px, py) = chart.backend_coord(&(x, y));
+        let (px, py) = (px - base.0, py - base.1);
+        let (pos, anchor) = if vertical {
+            ((px, py + 6), Pos::new(HPos::Center, VPos::Top))
+        } else {
+            ((px - 6, py), Pos::new(HPos::Right, VPos::Center))
+        };
+        let style = (FONT, 13).into_font().color(&BLACK).pos(anchor);
+        area.draw(&Text::new(label(p), pos, style)).map_err(err)?;
+    }
+    Ok(())
+}
+
+/// Width of the legend column beside the regime panel.
+const LEGEND_WIDTH: u32 = 170;
+
+/// The left panel: cases in the parameter plane coloured by regime, with a legend column.
+fn regime_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Result<(), String> {
+    let (plot_area, legend_area) = area.split_horizontally(area.dim_in_pixel().0 - LEGEND_WIDTH);
+    let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
+    let ys = span(data.y.as_ref(), data.points.iter().map(|p| p.y));
+    let y = data.y.as_ref().map_or(YAxis::Strip, YAxis::Param);
+    let mut chart = chart_in(&plot_area, "motion regime", data, y, (xs, ys))?;
+    let mut keys: Vec<String> = REGIMES.iter().map(|(n, _)| n.to_string()).collect();
+    for p in &data.points {
+        let k = regime_key(p);
+        if !keys.contains(&k) {
+            keys.push(k);
+        }
+    }
+    let mut entries = Vec::new();
+    for key in keys {
+        let pts: Vec<&Point> = data
+            .points
+            .iter()
+            .filter(|p| regime_key(p) == key)
+            .collect();
+        if pts.is_empty() {
+            continue;
+        }
+        let style = key_style(&key);
+        chart
+            .draw_series(pts.iter().map(|p| point_element((p.x, p.y), style)))
+            .map_err(err)?;
+        entries.push((format!("{key} ({})", pts.len()), style));
+    }
+    legend(&legend_area, &entries)
+}
+
+/// The legend: one marker and label per entry, from the top of its column.
+fn legend<DB: DrawingBackend>(area: &Area<DB>, entries: &[(String, Style)]) -> Result<(), String> {
+    for (i, (label, style)) in entries.iter().enumerate() {
+        let y = 70 + 24 * i as i32;
+        area.draw(&point_element((12, y), *style)).map_err(err)?;
+        area.draw(&Text::new(
+            label.clone(),
+            (26, y - 8),
+            (FONT, 14).into_font(),
+        ))
+        .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// The marker kind and colour of a legend key.
+#[derive(Clone, Copy)]
+enum Style {
+    Filled(Rgb),
+    Cross,
+    Hollow,
+}
+
+fn key_style(key: &str) -> Style {
+    match key {
+        "diverged / failed" => Style::Cross,
+        "not run / unfinished" => Style::Hollow,
+        regime => Style::Filled(regime_colour(regime)),
+    }
+}
+
+/// One marker.
+fn point_element<C: Copy + 'static, DB: DrawingBackend>(
+    at: C,
+    style: Style,
+) -> DynElement<'static, DB, C> {
+    match style {
+        Style::Filled(c) => Circle::new(at, 6, rgb(c).filled()).into_dyn(),
+        Style::Cross => Cross::new(at, 6, rgb(FAILED).stroke_width(2)).into_dyn(),
+        Style::Hollow => Circle::new(at, 6, RGBColor(150, 150, 150).stroke_width(1)).into_dyn(),
+    }
+}
+
+/// The right panel of a two-parameter sweep: the chosen value as a colour map, with a colour bar.
+fn value_map_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Result<(), String> {
+    let (plot_area, bar_area) = area.split_horizontally(area.dim_in_pixel().0 - 90);
+    let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
+    let ys = span(data.y.as_ref(), data.points.iter().map(|p| p.y));
+    let y = data.y.as_ref().map_or(YAxis::Strip, YAxis::Param);
+    let mut chart = chart_in(&plot_area, &data.value_key, data, y, (xs, ys))?;
+    let range = data.value_range();
+    chart
+        .draw_series(data.points.iter().map(|p| {
+            let style = match (p.shown_value(), range) {
+                (Some(v), Some((lo, hi))) => {
+                    let s = if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
+                    Style::Filled(colour_map(s))
+                }
+                _ if p.status == "completed" => Style::Hollow,
+                _ => key_style(&regime_key(p)),
+            };
+            point_element((p.x, p.y), style)
+        }))
+        .map_err(err)?;
+    colour_bar(&bar_area, range)
+}
+
+/// A vertical colour bar with its extreme and middle values.
+fn colour_bar<DB: DrawingBackend>(
+    area: &Area<DB>,
+    range: Option<(f64, f64)>,
+) -> Result<(), String> {
+    let (w, h) = area.dim_in_pixel();
+    let (top, bottom) = (60i32, h as i32 - 60);
+    let Some((lo, hi)) = range else {
+        return area
+            .draw(&Text::new("no values", (4, top), (FONT, 13).into_font()))
+            .map_err(err);
+    };
+    let steps = 64;
+    for i in 0..steps {
+        let y0 = bottom - (bottom - top) * (i + 1) / steps;
+        let y1 = bottom - (bottom - top) * i / steps;
+        let c = colour_map(i as f64 / (steps - 1) as f64);
+        area.draw(&Rectangle::new([(6, y0), (26, y1)], rgb(c).filled()))
+            .map_err(err)?;
+    }
+    let _ = w;
+    for (frac, v) in [(0.0, lo), (0.5, 0.5 * (lo + hi)), (1.0, hi)] {
+        let y = bottom - ((bottom - top) as f64 * frac) as i32 - 6;
+        let text = short_number(v);
+        area.draw(&Text::new(text, (30, y), (FONT, 13).into_font()))
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// The right panel of a one-parameter sweep: the chosen value against the swept option.
+fn value_curve_panel<DB: DrawingBackend>(
+    area: &Area<DB>,
+    data: &DiagramData,
+) -> Result<(), String> {
+    let mut pts: Vec<(f64, f64)> = data
+        .points
+        .iter()
+        .filter_map(|p| p.shown_value().map(|v| (p.x, v)))
+        .collect();
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
+    let vs = span(None, pts.iter().map(|p| p.1));
+    let y = YAxis::Value(&data.value_key);
+    let mut chart = chart_in(area, &data.value_key, data, y, (xs, vs))?;
+    if pts.is_empty() {
+        let (w, h) = area.dim_in_pixel();
+        let note = format!("no case has a value of {} (yet)", data.value_key);
+        let style = (FONT, 15)
+            .into_font()
+            .color(&BLACK)
+            .pos(Pos::new(HPos::Center, VPos::Center));
+        area.draw(&Text::new(note, (w as i32 / 2, h as i32 / 2), style))
+            .map_err(err)?;
+    }
+    let line = rgb((31, 119, 180));
+    chart
+        .draw_series(LineSeries::new(pts.clone(), line.stroke_width(2)))
+        .map_err(err)?;
+    chart
+        .draw_series(
+            pts.iter()
+                .map(|&(x, v)| Circle::new((x, v), 4, line.filled())),
+        )
+        .map_err(err)?;
+    Ok(())
+}

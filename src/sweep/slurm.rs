@@ -1,0 +1,209 @@
+//! `--slurm`: a job-array script with one task per case not yet done; each task runs
+//! `platefall sweep run-case DIR INDEX` with this executable's absolute path, so the cluster fills
+//! the same directory a local sweep would.
+use super::args::SlurmFlags;
+use super::child::is_done;
+use super::commands::this_exe;
+use super::fsutil::write_output;
+use super::layout::{prepare, Layout};
+use super::plan::{CaseSpec, Plan, SlurmPlan};
+use super::Failure;
+
+/// Resources when neither the plan nor a flag gives them.
+const DEFAULT_TIME: &str = "01:00:00";
+const DEFAULT_MEMORY: &str = "2G";
+/// Slurm's default MaxArraySize is 1001 (indices 0..=1000).
+const DEFAULT_MAX_ARRAY_INDEX: usize = 1000;
+
+/// The plan's resources overridden by the flags.
+fn resources(plan: &SlurmPlan, flags: &SlurmFlags) -> SlurmPlan {
+    SlurmPlan {
+        time: flags.time.clone().or_else(|| plan.time.clone()),
+        memory: flags.mem.clone().or_else(|| plan.memory.clone()),
+        cpus: flags.cpus.or(plan.cpus),
+        partition: flags.partition.clone().or_else(|| plan.partition.clone()),
+        max_parallel: flags.max_parallel.or(plan.max_parallel),
+        sbatch: plan.sbatch.clone(),
+        setup: plan.setup.clone(),
+    }
+}
+
+/// Indices as Slurm's `--array` takes them: runs of consecutive indices as `a-b`.
+pub fn array_spec(indices: &[usize]) -> String {
+    let mut parts = Vec::new();
+    let mut i = 0;
+    while i < indices.len() {
+        let start = indices[i];
+        let mut end = start;
+        while i + 1 < indices.len() && indices[i + 1] == end + 1 {
+            i += 1;
+            end += 1;
+        }
+        parts.push(if end == start {
+            start.to_string()
+        } else {
+            format!("{start}-{end}")
+        });
+        i += 1;
+    }
+    parts.join(",")
+}
+
+/// A word for the shell, single-quoted when it needs to be.
+fn quote(s: &str) -> String {
+    if !s.is_empty()
+        && s.chars()
+            .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+%@".contains(c))
+    {
+        s.to_string()
+    } else {
+        format!("'{}'", s.replace('\'', "'\\''"))
+    }
+}
+
+/// A job name Slurm and the shell accept.
+fn job_name(name: &str) -> String {
+    let clean: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || "-_.".contains(c) {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    format!("platefall-{clean}")
+}
+
+/// The text of `sweep.sbatch`.
+pub fn script(layout: &Layout, plan: &Plan, todo: &[usize], res: &SlurmPlan, exe: &str) -> String {
+    let dir = layout.dir.to_string_lossy();
+    let logs = layout.slurm_logs();
+    let mut array = array_spec(todo);
+    if let Some(n) = res.max_parallel {
+        array.push_str(&format!("%{n}"));
+    }
+    let mut s = String::from("#!/bin/bash\n");
+    s.push_str(&format!(
+        "# platefall sweep `{}`: {} case(s) of `{}` as a Slurm job array (one task per case).\n",
+        plan.name,
+        todo.len(),
+        plan.case
+    ));
+    s.push_str(&format!(
+        "# Submit: sbatch {}\n",
+        quote(&layout.output("sweep.sbatch").to_string_lossy())
+    ));
+    s.push_str(&format!(
+        "# Merge what has finished: {} sweep collect {}\n",
+        quote(exe),
+        quote(&dir)
+    ));
+    let mut opt = |line: String| s.push_str(&format!("#SBATCH {line}\n"));
+    opt(format!("--job-name={}", job_name(&plan.name)));
+    opt(format!("--array={array}"));
+    opt(format!("--output={}/%A_%a.out", logs.to_string_lossy()));
+    opt(format!(
+        "--time={}",
+        res.time.as_deref().unwrap_or(DEFAULT_TIME)
+    ));
+    opt(format!(
+        "--mem={}",
+        res.memory.as_deref().unwrap_or(DEFAULT_MEMORY)
+    ));
+    opt(format!("--cpus-per-task={}", res.cpus.unwrap_or(1)));
+    opt("--ntasks=1".into());
+    if let Some(p) = &res.partition {
+        opt(format!("--partition={p}"));
+    }
+    for line in &res.sbatch {
+        opt(line.trim().trim_start_matches("#SBATCH").trim().to_string());
+    }
+    s.push_str("set -eu\n");
+    for line in &res.setup {
+        s.push_str(line);
+        s.push('\n');
+    }
+    s.push_str(&format!(
+        "exec {} sweep run-case {} \"$SLURM_ARRAY_TASK_ID\"\n",
+        quote(exe),
+        quote(&dir)
+    ));
+    s
+}
+
+/// `--slurm`: prepares the directory, writes `DIR/sweep.sbatch` for the cases not yet done and
+/// prints how to submit it.
+pub fn submit_script(
+    layout: &Layout,
+    plan: &Plan,
+    cases: &[CaseSpec],
+    flags: &SlurmFlags,
+) -> Result<u8, Failure> {
+    let res = resources(&plan.slurm, flags);
+    super::plan::check_slurm(&res).map_err(Failure::input)?;
+    let exe = this_exe()?;
+    std::fs::create_dir_all(layout.slurm_logs()).map_err(|e| {
+        Failure::output(format!(
+            "cannot create {}: {e}",
+            layout.slurm_logs().display()
+        ))
+    })?;
+    prepare(layout, plan, cases)?;
+    let todo: Vec<usize> = cases
+        .iter()
+        .filter(|c| !is_done(layout, &c.id))
+        .map(|c| c.index)
+        .collect();
+    let path = layout.output("sweep.sbatch");
+    if todo.is_empty() {
+        println!(
+            "every case of {} is done: nothing to submit; merge with: platefall sweep collect {}",
+            layout.dir.display(),
+            layout.dir.display()
+        );
+        return Ok(0);
+    }
+    let text = script(layout, plan, &todo, &res, &exe.to_string_lossy());
+    write_output(&path, text.as_bytes())?;
+    if todo.last().is_some_and(|&i| i > DEFAULT_MAX_ARRAY_INDEX) {
+        eprintln!(
+            "warning: array indices go up to {}; Slurm's default MaxArraySize allows 0..={DEFAULT_MAX_ARRAY_INDEX} (ask your admins, or split the plan)",
+            todo.last().copied().unwrap_or(0)
+        );
+    }
+    println!(
+        "wrote {} ({} of {} cases; {} already done)",
+        path.display(),
+        todo.len(),
+        cases.len(),
+        cases.len() - todo.len()
+    );
+    println!("submit with:\n  sbatch {}", quote(&path.to_string_lossy()));
+    println!(
+        "then merge what has finished (any time) with:\n  {} sweep collect {}",
+        quote(&exe.to_string_lossy()),
+        quote(&layout.dir.to_string_lossy())
+    );
+    Ok(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn array_spec_merges_consecutive_indices() {
+        assert_eq!(array_spec(&[0, 1, 2, 3]), "0-3");
+        assert_eq!(array_spec(&[1, 3, 4, 5, 9]), "1,3-5,9");
+        assert_eq!(array_spec(&[7]), "7");
+    }
+
+    #[test]
+    fn quote_leaves_plain_words_and_quotes_the_rest() {
+        assert_eq!(quote("/a/b-c.d"), "/a/b-c.d");
+        assert_eq!(quote("a b"), "'a b'");
+        assert_eq!(quote("it's"), "'it'\\''s'");
+    }
+}
