@@ -8,7 +8,7 @@ use super::record_args::RecordArgs;
 use super::Command;
 use crate::body::{AbStart, PlateProps};
 use crate::config::PhysicalPlate;
-use crate::flow::FlowParams;
+use crate::flow::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
 use crate::grid::{GridSpec, Stretch};
 use crate::sim::{BodyConfig, Case, RunConfig, TimeControl};
 
@@ -54,6 +54,38 @@ pub struct SolverArgs {
     /// The seed's rotation rule Δt·|θ̇| ≤ CC.
     #[arg(long, default_value_t = 0.005, allow_negative_numbers = true)]
     pub cc: f64,
+    /// How the transport by the grid velocity is stepped outside the near field: `implicit`
+    /// (line solves; Δt follows the near field) or `explicit` (the scheme before issue 8, whose
+    /// Δt is bound by the far field's grid speed |θ̇| × extent).
+    #[arg(long, value_enum, default_value_t = FarFieldArg::Implicit)]
+    pub far_field: FarFieldArg,
+    /// Half-width of the near field along x (chords): columns farther out take the grid
+    /// transport along them implicitly (with --far-field implicit).
+    #[arg(long, default_value_t = NEAR_DEFAULT, allow_negative_numbers = true)]
+    pub near_x: f64,
+    /// Half-height of the near field along y (chords): rows farther out take the grid transport
+    /// along them implicitly.
+    #[arg(long, default_value_t = NEAR_DEFAULT, allow_negative_numbers = true)]
+    pub near_y: f64,
+    /// Worker threads for the run (0: one per core); the results do not depend on it.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+}
+
+/// `--far-field`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum FarFieldArg {
+    Explicit,
+    Implicit,
+}
+
+impl From<FarFieldArg> for FarFieldScheme {
+    fn from(a: FarFieldArg) -> FarFieldScheme {
+        match a {
+            FarFieldArg::Explicit => FarFieldScheme::Explicit,
+            FarFieldArg::Implicit => FarFieldScheme::Implicit,
+        }
+    }
 }
 
 #[derive(Args, Debug)]
@@ -205,6 +237,9 @@ impl SolverArgs {
             flow: FlowParams {
                 re: self.re.unwrap_or(default_re),
                 cfl: self.cfl,
+                far_field: self.far_field.into(),
+                near_x: self.near_x,
+                near_y: self.near_y,
                 ..FlowParams::default()
             },
             body,

@@ -11,24 +11,49 @@
 //!    u* = g on the plate and the outer boundary values at tⁿ⁺¹, and projects. On return uⁿ⁺¹ is
 //!    discretely divergence-free in every fluid cell, pⁿ⁺¹ is set and the loads are computed.
 //!
-//! The hot path allocates nothing after [`FlowSolver::new`].
+//! With [`FarFieldScheme::Implicit`] (the default) the grid-velocity transport outside a near
+//! field around the plate is taken implicitly instead (`zones.rs`, `implicit.rs`): phase 2 then
+//! solves tridiagonal systems along the split rows and columns before the projection, and the
+//! pressure is incremental. Inside the near field the scheme is the one above.
+//!
+//! The hot path allocates nothing after [`FlowSolver::new`]. The u and v halves of each phase run
+//! in parallel (`rayon::join`); called from inside a rayon pool that allocates nothing either.
 pub mod array;
 pub mod boundary;
 pub mod frame;
+pub mod implicit;
 pub mod metrics;
 pub mod momentum;
 pub mod plate;
 pub mod pressure;
+pub mod thomas;
+pub mod zones;
 
 pub use boundary::{OuterBc, VelocityFn};
 pub use frame::Frame;
 pub use plate::BodyAxesLoads;
 
 use array::Padded;
+use boundary::Outflow;
+use implicit::{Inputs, Part, Weights};
 use metrics::{Component, Metrics};
-use pressure::Pressure;
+use momentum::RhsContext;
+use pressure::{Pressure, PressureUpdate};
+use zones::Zones;
 
 use crate::grid::Grid;
+use crate::param::{check_range, InputError, Param};
+
+/// How the transport by the grid velocity is stepped away from the plate (SPEC §3).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FarFieldScheme {
+    /// Explicit everywhere (the scheme before issue 8): Δt is bound by |θ̇| × the extent.
+    Explicit,
+    /// Implicit along the lines outside the near field: Δt follows the near field.
+    #[default]
+    Implicit,
+}
 
 /// Numerical parameters of the flow solver.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -39,6 +64,22 @@ pub struct FlowParams {
     pub cfl: f64,
     /// Fraction of the explicit viscous stability limit used.
     pub visc_safety: f64,
+    /// How the grid transport is stepped outside the near field.
+    #[serde(default)]
+    pub far_field: FarFieldScheme,
+    /// Half-widths of the near field (chords): columns with |x| > `near_x` and rows with
+    /// |y| > `near_y` take the grid transport along them implicitly.
+    #[serde(default = "default_near")]
+    pub near_x: f64,
+    #[serde(default = "default_near")]
+    pub near_y: f64,
+}
+
+/// The near field's default half-width (chords); see the README, "Performance".
+pub const NEAR_DEFAULT: f64 = 1.0;
+
+fn default_near() -> f64 {
+    NEAR_DEFAULT
 }
 
 impl Default for FlowParams {
@@ -47,6 +88,28 @@ impl Default for FlowParams {
             re: 5000.0,
             cfl: 0.5,
             visc_safety: 0.8,
+            far_field: FarFieldScheme::Implicit,
+            near_x: NEAR_DEFAULT,
+            near_y: NEAR_DEFAULT,
+        }
+    }
+}
+
+impl FlowParams {
+    /// Checks every value, naming the first bad one and its accepted range.
+    pub fn validate(&self) -> Result<(), InputError> {
+        check_range(Param::Reynolds, self.re, 0.0, 1e5, true)?;
+        check_range(Param::Cfl, self.cfl, 0.0, 1.0, true)?;
+        check_range(Param::NearX, self.near_x, 0.5, 1000.0, false)?;
+        check_range(Param::NearY, self.near_y, 0.5, 1000.0, false)
+    }
+
+    /// Today's explicit scheme everywhere (the byte-identical baseline).
+    pub fn explicit(re: f64) -> FlowParams {
+        FlowParams {
+            re,
+            far_field: FarFieldScheme::Explicit,
+            ..FlowParams::default()
         }
     }
 }
@@ -84,6 +147,9 @@ pub struct FlowSolver {
     outer: OuterBc,
     forcing: Option<ForceFn>,
     wall: plate::WallFaces,
+    /// The lines with implicit grid transport (none in the explicit scheme) and their workspaces.
+    zones: Zones,
+    implicit: Option<Box<(Part, Part)>>,
     /// Motion of the plate at the current time level.
     pub frame: Frame,
     /// Current time and the last step taken (0 before the first step).
@@ -114,6 +180,18 @@ impl FlowSolver {
         let dt_visc =
             params.visc_safety / (4.0 * nu * (1.0 / (min_dx * min_dx) + 1.0 / (min_dy * min_dy)));
         let (nx, ny) = (grid.nx, grid.ny);
+        let (zones, implicit) = match params.far_field {
+            FarFieldScheme::Explicit => (Zones::none(&grid), None),
+            FarFieldScheme::Implicit => {
+                let z = Zones::new(&grid, params.near_x, params.near_y);
+                z.check_plate(&grid).map_err(FlowError::Setup)?;
+                let parts = (
+                    Part::new(Component::U, nx + 1, ny),
+                    Part::new(Component::V, nx, ny + 1),
+                );
+                (z, Some(Box::new(parts)))
+            }
+        };
         let mut s = FlowSolver {
             u: Padded::zeros(nx + 1, ny),
             v: Padded::zeros(nx, ny + 1),
@@ -126,6 +204,8 @@ impl FlowSolver {
             outer,
             forcing: None,
             wall,
+            zones,
+            implicit,
             frame,
             t: 0.0,
             dt_prev: 0.0,
@@ -172,16 +252,13 @@ impl FlowSolver {
             &self.outer,
             self.t,
         );
-        let nu = 1.0 / self.params.re;
-        let stats = momentum::explicit_rhs(
-            &self.u,
-            &self.v,
-            &self.metrics,
-            &self.frame,
-            nu,
-            &mut self.hu,
-            &mut self.hv,
-        );
+        let context = RhsContext {
+            m: &self.metrics,
+            frame: &self.frame,
+            nu: 1.0 / self.params.re,
+            zones: &self.zones,
+        };
+        let stats = momentum::explicit_rhs(&self.u, &self.v, context, &mut self.hu, &mut self.hv);
         self.convective_rate = stats.convective_rate;
         self.wall.apply(
             &self.u,
@@ -222,19 +299,17 @@ impl FlowSolver {
             "FlowSolver::advance needs a positive finite dt, got {dt}"
         );
         self.prepared = false;
-        self.predict(dt);
         let t_next = self.t + dt;
-        self.frame = next;
-        self.impose_plate();
-        boundary::set_outer_normals(
-            &mut self.u,
-            &mut self.v,
-            &self.metrics,
-            &self.frame,
-            &self.outer,
-            t_next,
-            dt,
-        );
+        let update = if self.implicit.is_some() {
+            self.predict_implicit(dt, next);
+            PressureUpdate::Increment
+        } else {
+            self.predict(dt);
+            self.frame = next;
+            self.impose_plate();
+            self.set_outer_normals(t_next, dt, Outflow::Explicit);
+            PressureUpdate::Replace
+        };
         self.pressure.project(
             &mut self.u,
             &mut self.v,
@@ -242,6 +317,7 @@ impl FlowSolver {
             &self.metrics,
             dt,
             &mut self.p,
+            update,
         );
         self.t = t_next;
         self.dt_prev = dt;
@@ -271,6 +347,116 @@ impl FlowSolver {
         update(&mut self.v, &self.hv, &self.hv_old, 0..nx, 1..ny);
         std::mem::swap(&mut self.hu, &mut self.hu_old);
         std::mem::swap(&mut self.hv, &mut self.hv_old);
+    }
+
+    /// The outer boundary's normal velocities at `t` for the current frame, net flux removed.
+    fn set_outer_normals(&mut self, t: f64, dt: f64, outflow: Outflow) {
+        boundary::set_outer_normals(
+            &mut self.u,
+            &mut self.v,
+            &self.metrics,
+            &self.frame,
+            &self.outer,
+            t,
+            dt,
+            outflow,
+        );
+    }
+
+    /// The predictor of the implicit far field (see `implicit.rs`): the right-hand side, the
+    /// boundary values at n+1, the row and column sweeps, u* = uⁿ + Δ, and the plate faces.
+    fn predict_implicit(&mut self, dt: f64, next: Frame) {
+        let Some(mut parts) = self.implicit.take() else {
+            return;
+        };
+        if self.steps == 0 {
+            self.start_pressure(&mut parts);
+        }
+        let w = Weights::new(dt, if self.steps == 0 { 0.0 } else { self.dt_prev });
+        let f0 = self.frame;
+        let (pu, pv) = &mut *parts;
+        let (xu, xv) = (
+            self.inputs(Component::U, &f0, &next),
+            self.inputs(Component::V, &f0, &next),
+        );
+        rayon::join(|| pu.assemble(&xu, &w, dt), || pv.assemble(&xv, &w, dt));
+        std::mem::swap(&mut self.hu, &mut self.hu_old);
+        std::mem::swap(&mut self.hv, &mut self.hv_old);
+        self.frame = next;
+        self.implicit_boundary(pu, pv, dt);
+        let (m, z, a) = (&self.metrics, &self.zones, w.g2 * dt);
+        let rule = implicit::ghost_rule(&self.outer);
+        let (u, v) = (&mut self.u, &mut self.v);
+        rayon::join(
+            || {
+                pu.sweep_rows(m, z, &next, a, rule);
+                pu.sweep_columns(m, z, &next, a, rule);
+                pu.apply(u);
+            },
+            || {
+                pv.sweep_rows(m, z, &next, a, rule);
+                pv.sweep_columns(m, z, &next, a, rule);
+                pv.apply(v);
+            },
+        );
+        self.implicit = Some(parts);
+        self.impose_plate();
+    }
+
+    /// What a component's right-hand side reads (the frames at n and n+1).
+    fn inputs<'a>(&'a self, c: Component, f0: &'a Frame, f1: &'a Frame) -> Inputs<'a> {
+        let (q, h, h_old) = match c {
+            Component::U => (&self.u, &self.hu, &self.hu_old),
+            Component::V => (&self.v, &self.hv, &self.hv_old),
+        };
+        Inputs {
+            q,
+            h,
+            h_old,
+            p: &self.p,
+            grid: &self.grid,
+            m: &self.metrics,
+            zones: &self.zones,
+            f0,
+            f1,
+        }
+    }
+
+    /// The outer normal velocities at n+1 (implicit outflow, from the interior at n), kept as the
+    /// known ends of the sweeps; for a prescribed boundary also the tangential ghosts at n+1.
+    fn implicit_boundary(&mut self, pu: &mut Part, pv: &mut Part, dt: f64) {
+        let t_next = self.t + dt;
+        pu.save_boundary(&self.u);
+        pv.save_boundary(&self.v);
+        self.set_outer_normals(t_next, dt, Outflow::Implicit);
+        pu.finish_boundary(&self.u);
+        pv.finish_boundary(&self.v);
+        if let OuterBc::Prescribed(f) = &self.outer {
+            pu.prescribed_ghosts(&self.u, &self.metrics, &self.zones, f, t_next);
+            pv.prescribed_ghosts(&self.v, &self.metrics, &self.zones, f, t_next);
+        }
+    }
+
+    /// The incremental pressure's start: p⁰ is the potential of the gradient part of the full
+    /// right-hand side at t = 0 (so a steady flow, e.g. rigid rotation, starts in balance).
+    fn start_pressure(&mut self, parts: &mut (Part, Part)) {
+        let f0 = self.frame;
+        let (xu, xv) = (
+            self.inputs(Component::U, &f0, &f0),
+            self.inputs(Component::V, &f0, &f0),
+        );
+        parts.0.total_rhs(&xu);
+        parts.1.total_rhs(&xv);
+        let zero = Frame::default();
+        plate::set_plate_faces(
+            &mut parts.0.d,
+            &mut parts.1.d,
+            &self.grid,
+            &self.metrics,
+            &zero,
+        );
+        self.pressure
+            .potential(&parts.0.d, &parts.1.d, &self.grid, &mut self.p);
     }
 
     /// The loads on the plate after a projection; an error if they are not finite.

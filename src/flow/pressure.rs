@@ -44,6 +44,15 @@ pub struct Pressure {
 #[derive(Debug)]
 pub struct PressureError(pub String);
 
+/// How a projection sets the pressure from its potential φ.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PressureUpdate {
+    /// p = φ/Δt.
+    Replace,
+    /// p += φ/Δt (incremental pressure).
+    Increment,
+}
+
 impl Pressure {
     /// Assembles and factors −∇² with the Neumann conditions described above.
     pub fn new(grid: &Grid, m: &Metrics) -> Result<Self, PressureError> {
@@ -89,8 +98,11 @@ impl Pressure {
             + (v.get(ii, jj + 1) - v.get(ii, jj)) * grid.dx[i]
     }
 
-    /// Projects (u, v) onto the discretely divergence-free space, in place; returns p = φ/Δt in `p`.
-    /// Only faces between two fluid cells change.
+    /// Projects (u, v) onto the discretely divergence-free space, in place, and sets p from
+    /// φ/Δt: p = φ/Δt ([`PressureUpdate::Replace`], the predictor held no pressure gradient) or
+    /// p += φ/Δt ([`PressureUpdate::Increment`], it held the old one). Only faces between two
+    /// fluid cells change.
+    #[allow(clippy::too_many_arguments)]
     pub fn project(
         &mut self,
         u: &mut Padded,
@@ -99,10 +111,19 @@ impl Pressure {
         m: &Metrics,
         dt: f64,
         p: &mut [f64],
+        update: PressureUpdate,
     ) {
         self.solve_phi(u, v, grid);
         self.correct_velocity(u, v, m);
-        self.pressure_from_phi(dt, p);
+        self.pressure_from_phi(dt, p, update);
+    }
+
+    /// The potential of the gradient part of a field f given on the faces (zero on the outer and
+    /// plate faces): p with ∇·(f − ∇p) = 0 in every fluid cell, p → 0 on the outer ring. Starts
+    /// the incremental pressure of the implicit far field.
+    pub fn potential(&mut self, fu: &Padded, fv: &Padded, grid: &Grid, p: &mut [f64]) {
+        self.solve_phi(fu, fv, grid);
+        self.pressure_from_phi(1.0, p, PressureUpdate::Replace);
     }
 
     /// Solves (−L) φ = −div u* and scatters φ onto the cells (0 on plate and pinned cells).
@@ -153,9 +174,9 @@ impl Pressure {
         }
     }
 
-    /// p = φ/Δt, shifted so that its mean over the outermost ring of cells is zero (p → 0 far
-    /// away); zero inside the plate.
-    fn pressure_from_phi(&self, dt: f64, p: &mut [f64]) {
+    /// p = φ/Δt (or p += φ/Δt), φ shifted so that its mean over the outermost ring of cells is
+    /// zero (p → 0 far away); zero inside the plate.
+    fn pressure_from_phi(&self, dt: f64, p: &mut [f64], update: PressureUpdate) {
         let (nx, ny) = (self.nx, self.ny);
         let (phi, fluid) = (&self.phi, &self.fluid);
         let inv_dt = 1.0 / dt;
@@ -171,10 +192,10 @@ impl Pressure {
         }
         let shift = ring / count as f64;
         for (k, pk) in p.iter_mut().enumerate() {
-            *pk = if fluid[k] {
-                (phi[k] - shift) * inv_dt
-            } else {
-                0.0
+            *pk = match (fluid[k], update) {
+                (false, _) => 0.0,
+                (true, PressureUpdate::Replace) => (phi[k] - shift) * inv_dt,
+                (true, PressureUpdate::Increment) => *pk + (phi[k] - shift) * inv_dt,
             };
         }
     }

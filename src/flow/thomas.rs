@@ -1,0 +1,165 @@
+//! Tridiagonal line solves for the implicit grid transport (`implicit.rs`), on preallocated data.
+//!
+//! Every system is (I + β_l·D) Δ = R along one grid line, with the central difference
+//! D q_k = cv_k (q_{k+1} − q_{k−1}) (cv_k the inverse control-volume length of point k) and β_l
+//! constant along the line. The sub- and super-diagonals β cv_k and −β cv_k have opposite signs,
+//! so the Thomas pivots are 1 + β² cv_k cv_{k−1}/d_{k−1} ≥ 1: no pivoting is needed at any Courant
+//! number. The value beyond each end is either known (a boundary face, or a prescribed ghost) or
+//! tied to the end unknown by a relation q_end = s·q_first (s = −1: zero on the wall between them,
+//! rest inflow; s = +1: zero gradient, outflow); the relation is chosen so that it adds to the
+//! diagonal (see `implicit.rs`), keeping the pivots ≥ 1.
+use std::ops::Range;
+
+use super::array::Padded;
+
+/// What lies beyond the end of a line.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum End {
+    /// The value there (a Δ) is stored in the array itself.
+    Known,
+    /// It equals `s` times the end unknown.
+    Relation(f64),
+}
+
+/// Solves one line stored contiguously: unknowns `line[1..=n]`, the ends `line[0]` and
+/// `line[n + 1]`; `cv[k − 1]` belongs to unknown k; `cp` is scratch of length ≥ n + 1.
+pub fn solve_line(line: &mut [f64], cv: &[f64], beta: f64, ends: (End, End), cp: &mut [f64]) {
+    let n = line.len() - 2;
+    debug_assert!(n >= 2 && cv.len() >= n && cp.len() > n);
+    let t = EndTerms::new(
+        [line[0], line[1], line[n], line[n + 1]],
+        cv[0] * beta,
+        -cv[n - 1] * beta,
+        ends,
+    );
+    (line[1], line[n]) = (t.first, t.last);
+    let (mut prev_cp, mut prev_d) = (0.0, 0.0);
+    for k in 1..=n {
+        let c = cv[k - 1] * beta;
+        let mut diag = 1.0 - c * prev_cp;
+        if k == 1 {
+            diag += t.lo_diag;
+        }
+        if k == n {
+            diag += t.hi_diag;
+        }
+        prev_cp = -c / diag;
+        prev_d = (line[k] - c * prev_d) / diag;
+        cp[k] = prev_cp;
+        line[k] = prev_d;
+    }
+    for k in (1..n).rev() {
+        line[k] -= cp[k] * line[k + 1];
+    }
+}
+
+/// The ends of one line applied: the first and last right-hand sides with the known values moved
+/// over, and what the relations add to the first and last diagonal.
+struct EndTerms {
+    first: f64,
+    last: f64,
+    lo_diag: f64,
+    hi_diag: f64,
+}
+
+impl EndTerms {
+    /// `[before, first, last, after]`: the end values and the first and last right-hand sides;
+    /// `lower` is the first row's sub-diagonal, `upper` the last row's super-diagonal.
+    fn new(v: [f64; 4], lower: f64, upper: f64, ends: (End, End)) -> EndTerms {
+        let [before, mut first, mut last, after] = v;
+        let lo_diag = match ends.0 {
+            End::Known => {
+                first -= lower * before;
+                0.0
+            }
+            End::Relation(s) => s * lower,
+        };
+        let hi_diag = match ends.1 {
+            End::Known => {
+                last -= upper * after;
+                0.0
+            }
+            End::Relation(s) => s * upper,
+        };
+        EndTerms {
+            first,
+            last,
+            lo_diag,
+            hi_diag,
+        }
+    }
+}
+
+/// The columns of one segment solved together, row by row (contiguous in memory): unknowns in
+/// rows `rows`, ends in the rows just outside; `cv[j]` for row j, `beta[i]` and `ends[i]` for
+/// column i. `cp` has the layout of `d`; its rows just outside `rows` hold the end terms.
+pub struct Columns<'a> {
+    pub cols: Range<isize>,
+    pub rows: Range<isize>,
+    pub cv: &'a [f64],
+    pub beta: &'a [f64],
+    pub ends: &'a [(End, End)],
+}
+
+impl Columns<'_> {
+    /// Solves every column of the segment in place in `d`.
+    pub fn solve(&self, d: &mut Padded, cp: &mut Padded) {
+        let (j0, j1) = (self.rows.start, self.rows.end);
+        if self.cols.is_empty() {
+            return;
+        }
+        debug_assert!(j1 - j0 >= 2);
+        self.apply_ends(d, cp);
+        for j in j0..j1 {
+            self.eliminate(d, cp, j);
+        }
+        for j in (j0..j1 - 1).rev() {
+            let (row, next) = (d.at(self.cols.start, j), d.at(self.cols.start, j + 1));
+            for q in 0..self.cols.len() {
+                d.data[row + q] -= cp.data[row + q] * d.data[next + q];
+            }
+        }
+    }
+
+    /// Known ends go into the first and last right-hand sides; the relations' diagonal additions
+    /// are kept in the rows of `cp` just outside the unknowns.
+    fn apply_ends(&self, d: &mut Padded, cp: &mut Padded) {
+        let (j0, j1) = (self.rows.start, self.rows.end);
+        let (clo, chi) = (self.cv[j0 as usize], self.cv[(j1 - 1) as usize]);
+        for i in self.cols.clone() {
+            let b = self.beta[i as usize];
+            let v = [
+                d.get(i, j0 - 1),
+                d.get(i, j0),
+                d.get(i, j1 - 1),
+                d.get(i, j1),
+            ];
+            let t = EndTerms::new(v, b * clo, -b * chi, self.ends[i as usize]);
+            d.set(i, j0, t.first);
+            d.set(i, j1 - 1, t.last);
+            cp.set(i, j0 - 1, t.lo_diag);
+            cp.set(i, j1, t.hi_diag);
+        }
+    }
+
+    /// Forward elimination of row j for every column of the segment.
+    fn eliminate(&self, d: &mut Padded, cp: &mut Padded, j: isize) {
+        let (j0, j1) = (self.rows.start, self.rows.end);
+        let cvj = self.cv[j as usize];
+        let (row, prev) = (d.at(self.cols.start, j), d.at(self.cols.start, j - 1));
+        let hi = cp.at(self.cols.start, j1);
+        for (q, i) in self.cols.clone().enumerate() {
+            let c = cvj * self.beta[i as usize];
+            let (mut diag, pd) = if j == j0 {
+                (1.0 + cp.data[prev + q], 0.0)
+            } else {
+                (1.0 - c * cp.data[prev + q], d.data[prev + q])
+            };
+            if j == j1 - 1 {
+                diag += cp.data[hi + q];
+            }
+            cp.data[row + q] = -c / diag;
+            d.data[row + q] = (d.data[row + q] - c * pd) / diag;
+        }
+    }
+}
