@@ -349,36 +349,53 @@ impl Part {
         }
     }
 
-    /// Prescribed boundary: the increments of the tangential ghosts at the ends of the split lines
-    /// (exact value at `t1` minus the ghost at n).
-    pub fn prescribed_ghosts(
-        &mut self,
-        q: &Padded,
-        m: &Metrics,
-        z: &Zones,
-        f: &VelocityFn,
-        t1: f64,
-    ) {
+    /// Prescribed boundary: the increments of the ghosts just outside the domain (exact value at
+    /// `t1` minus the ghost at n): u below and above, v left and right.
+    pub fn prescribed_ghosts(&mut self, q: &Padded, m: &Metrics, f: &VelocityFn, t1: f64) {
         let (ni, nj) = (self.d.ni as isize, self.d.nj as isize);
         let c = self.c;
-        let pick = |(a, b): (f64, f64)| if c == Component::U { a } else { b };
-        let set = |d: &mut Padded, i: isize, j: isize| {
-            let (x, y) = m.face_position(c, i, j);
-            d.set(i, j, pick(f(x, y, t1)) - q.get(i, j));
+        let ghosts: [(isize, isize, bool); 2] = match c {
+            Component::U => [(-1, ni, true), (nj, ni, true)],
+            Component::V => [(-1, nj, false), (ni, nj, false)],
         };
-        match c {
+        for (fixed, len, is_row) in ghosts {
+            for k in 0..len {
+                let (i, j) = if is_row { (k, fixed) } else { (fixed, k) };
+                let (x, y) = m.face_position(c, i, j);
+                let (fu, fv) = f(x, y, t1);
+                let exact = if c == Component::U { fu } else { fv };
+                self.d.set(i, j, exact - q.get(i, j));
+            }
+        }
+    }
+
+    /// The known ends of the row sweeps hold the intermediate W = (I + a L_y)Δ of the factored
+    /// system, not Δ itself: along each end column that is split, L_y is applied to the known
+    /// increments (for u the boundary faces, with the corner ghosts; for v, prescribed boundaries
+    /// only, the ghost columns). Without this the factorisation error at the ends would be
+    /// O(Δt²) per step at large Courant numbers.
+    pub fn intermediate_ends(&mut self, m: &Metrics, z: &Zones, f1: &Frame, a: f64, rule: GhostEnds) {
+        let (ni, nj) = (self.d.ni as isize, self.d.nj as isize);
+        match self.c {
             Component::U => {
-                for i in (1..ni - 1).filter(|&i| z.u_col[i as usize]) {
-                    set(&mut self.d, i, -1);
-                    set(&mut self.d, i, nj);
+                for ie in [0, ni - 1].into_iter().filter(|&i| z.u_col[i as usize]) {
+                    let beta = 0.5 * a * line_velocity(m, f1, self.c, false, ie);
+                    if let (End::Relation(lo), End::Relation(hi)) = ghost_ends(rule, beta) {
+                        self.d.set(ie, -1, lo * self.d.get(ie, 0));
+                        self.d.set(ie, nj, hi * self.d.get(ie, nj - 1));
+                    }
+                    apply_along_column(&mut self.d, ie, 0..nj, beta, &m.u_y.inv_cv);
                 }
             }
-            Component::V => {
-                for j in (1..nj - 1).filter(|&j| z.v_row[j as usize]) {
-                    set(&mut self.d, -1, j);
-                    set(&mut self.d, ni, j);
+            Component::V if rule == GhostEnds::Known => {
+                for (ie, inner) in [(-1, 0), (ni, ni - 1)] {
+                    if z.v_col[inner as usize] {
+                        let beta = 0.5 * a * line_velocity(m, f1, self.c, false, ie);
+                        apply_along_column(&mut self.d, ie, 1..nj - 1, beta, &m.v_y.inv_cv);
+                    }
                 }
             }
+            Component::V => {}
         }
     }
 
@@ -409,10 +426,84 @@ impl Part {
     }
 }
 
+/// d ← (I + β D_y) d in column i over `rows` (D_y q_j = cv_j (q_{j+1} − q_{j−1}), the rows just
+/// outside read as they are).
+fn apply_along_column(d: &mut Padded, i: isize, rows: std::ops::Range<isize>, beta: f64, cv: &[f64]) {
+    let mut prev = d.get(i, rows.start - 1);
+    for j in rows {
+        let cur = d.get(i, j);
+        d.set(i, j, cur - beta * cv[j as usize] * (d.get(i, j + 1) - prev));
+        prev = cur;
+    }
+}
+
 /// Whether the outer boundary is prescribed (exact values) or the far field.
 pub fn ghost_rule(bc: &OuterBc) -> GhostEnds {
     match bc {
         OuterBc::FarField => GhostEnds::Relation,
         OuterBc::Prescribed(_) => GhostEnds::Known,
+    }
+}
+
+/// The implicit far field's state: the two components' workspaces, γ₂ of the last step, and a
+/// cell-sized scratch for the pressure update.
+pub struct State {
+    pub u: Part,
+    pub v: Part,
+    pub g2: f64,
+    pub cells: Vec<f64>,
+}
+
+impl State {
+    pub fn new(nx: usize, ny: usize) -> State {
+        State {
+            u: Part::new(Component::U, nx + 1, ny),
+            v: Part::new(Component::V, nx, ny + 1),
+            g2: 0.5,
+            cells: vec![0.0; nx * ny],
+        }
+    }
+}
+
+/// φ ← (I + a L_x)(I + a L_y) φ on the cell centres, with the transport of frame `f` along the
+/// split cell rows (|y_c| > Y_cut, as the u-rows) and columns (|x_c| > X_cut, as the v-columns):
+/// the factored operator of the predictor applied to the projection's potential, so that the
+/// incremental pressure p += Aφ/Δt carries the gradient the velocity actually received. Beyond
+/// the domain φ mirrors its edge value (its zero normal gradient).
+#[allow(clippy::too_many_arguments)]
+pub fn factored_potential(
+    phi: &mut [f64],
+    scratch: &mut [f64],
+    grid: &Grid,
+    m: &Metrics,
+    z: &Zones,
+    f: &Frame,
+    a: f64,
+) {
+    let (nx, ny) = (grid.nx, grid.ny);
+    for j in 0..ny {
+        let half = 0.5 * a * m.u_y.inv_cv[j];
+        for i in 0..nx {
+            let k = i + nx * j;
+            scratch[k] = phi[k];
+            if z.v_col[i] {
+                let lo = if j > 0 { phi[k - nx] } else { phi[k] };
+                let hi = if j + 1 < ny { phi[k + nx] } else { phi[k] };
+                scratch[k] -= half * f.gy(m.x.centre(i as isize)) * (hi - lo);
+            }
+        }
+    }
+    for j in 0..ny {
+        let row = &mut phi[nx * j..nx * (j + 1)];
+        let src = &scratch[nx * j..nx * (j + 1)];
+        row.copy_from_slice(src);
+        if z.u_row[j] {
+            let g = 0.5 * a * f.gx(m.y.centre(j as isize));
+            for i in 0..nx {
+                let lo = src[i.saturating_sub(1)];
+                let hi = src[(i + 1).min(nx - 1)];
+                row[i] -= g * m.v_x.inv_cv[i] * (hi - lo);
+            }
+        }
     }
 }

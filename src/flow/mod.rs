@@ -35,7 +35,7 @@ pub use plate::BodyAxesLoads;
 
 use array::Padded;
 use boundary::Outflow;
-use implicit::{Inputs, Part, Weights};
+use implicit::{Inputs, Part, State, Weights};
 use metrics::{Component, Metrics};
 use momentum::RhsContext;
 use pressure::{Pressure, PressureUpdate};
@@ -149,7 +149,7 @@ pub struct FlowSolver {
     wall: plate::WallFaces,
     /// The lines with implicit grid transport (none in the explicit scheme) and their workspaces.
     zones: Zones,
-    implicit: Option<Box<(Part, Part)>>,
+    implicit: Option<Box<State>>,
     /// Motion of the plate at the current time level.
     pub frame: Frame,
     /// Current time and the last step taken (0 before the first step).
@@ -185,11 +185,7 @@ impl FlowSolver {
             FarFieldScheme::Implicit => {
                 let z = Zones::new(&grid, params.near_x, params.near_y);
                 z.check_plate(&grid).map_err(FlowError::Setup)?;
-                let parts = (
-                    Part::new(Component::U, nx + 1, ny),
-                    Part::new(Component::V, nx, ny + 1),
-                );
-                (z, Some(Box::new(parts)))
+                (z, Some(Box::new(State::new(nx, ny))))
             }
         };
         let mut s = FlowSolver {
@@ -300,25 +296,23 @@ impl FlowSolver {
         );
         self.prepared = false;
         let t_next = self.t + dt;
-        let update = if self.implicit.is_some() {
+        if self.implicit.is_some() {
             self.predict_implicit(dt, next);
-            PressureUpdate::Increment
+            self.project_incremental(dt);
         } else {
             self.predict(dt);
             self.frame = next;
             self.impose_plate();
             self.set_outer_normals(t_next, dt, Outflow::Explicit);
-            PressureUpdate::Replace
-        };
-        self.pressure.project(
-            &mut self.u,
-            &mut self.v,
-            &self.grid,
-            &self.metrics,
-            dt,
-            &mut self.p,
-            update,
-        );
+            self.pressure.project(
+                &mut self.u,
+                &mut self.v,
+                &self.grid,
+                &self.metrics,
+                dt,
+                &mut self.p,
+            );
+        }
         self.t = t_next;
         self.dt_prev = dt;
         self.steps += 1;
@@ -366,15 +360,16 @@ impl FlowSolver {
     /// The predictor of the implicit far field (see `implicit.rs`): the right-hand side, the
     /// boundary values at n+1, the row and column sweeps, u* = uⁿ + Δ, and the plate faces.
     fn predict_implicit(&mut self, dt: f64, next: Frame) {
-        let Some(mut parts) = self.implicit.take() else {
+        let Some(mut state) = self.implicit.take() else {
             return;
         };
         if self.steps == 0 {
-            self.start_pressure(&mut parts);
+            self.start_pressure(&mut state);
         }
         let w = Weights::new(dt, if self.steps == 0 { 0.0 } else { self.dt_prev });
+        state.g2 = w.g2;
         let f0 = self.frame;
-        let (pu, pv) = &mut *parts;
+        let (pu, pv) = (&mut state.u, &mut state.v);
         let (xu, xv) = (
             self.inputs(Component::U, &f0, &next),
             self.inputs(Component::V, &f0, &next),
@@ -389,18 +384,44 @@ impl FlowSolver {
         let (u, v) = (&mut self.u, &mut self.v);
         rayon::join(
             || {
+                pu.intermediate_ends(m, z, &next, a, rule);
                 pu.sweep_rows(m, z, &next, a, rule);
                 pu.sweep_columns(m, z, &next, a, rule);
                 pu.apply(u);
             },
             || {
+                pv.intermediate_ends(m, z, &next, a, rule);
                 pv.sweep_rows(m, z, &next, a, rule);
                 pv.sweep_columns(m, z, &next, a, rule);
                 pv.apply(v);
             },
         );
-        self.implicit = Some(parts);
+        self.implicit = Some(state);
         self.impose_plate();
+    }
+
+    /// The projection of the implicit far field: the velocity as usual, and the incremental
+    /// pressure p += A φ/Δt with A = (I + a L_x)(I + a L_y) the factored operator of the
+    /// predictor applied to φ (`implicit::factored_potential`). Adding φ/Δt alone would feed the
+    /// factorisation error back into the next predictor through the pressure, which diverges
+    /// where both directions are implicit at Courant numbers ≳ 1; with A it cancels.
+    fn project_incremental(&mut self, dt: f64) {
+        self.pressure
+            .project_velocity(&mut self.u, &mut self.v, &self.grid, &self.metrics);
+        if let Some(state) = &mut self.implicit {
+            let a = state.g2 * dt;
+            implicit::factored_potential(
+                &mut self.pressure.phi,
+                &mut state.cells,
+                &self.grid,
+                &self.metrics,
+                &self.zones,
+                &self.frame,
+                a,
+            );
+        }
+        self.pressure
+            .set_pressure(dt, &mut self.p, PressureUpdate::Increment);
     }
 
     /// What a component's right-hand side reads (the frames at n and n+1).
@@ -432,31 +453,31 @@ impl FlowSolver {
         pu.finish_boundary(&self.u);
         pv.finish_boundary(&self.v);
         if let OuterBc::Prescribed(f) = &self.outer {
-            pu.prescribed_ghosts(&self.u, &self.metrics, &self.zones, f, t_next);
-            pv.prescribed_ghosts(&self.v, &self.metrics, &self.zones, f, t_next);
+            pu.prescribed_ghosts(&self.u, &self.metrics, f, t_next);
+            pv.prescribed_ghosts(&self.v, &self.metrics, f, t_next);
         }
     }
 
     /// The incremental pressure's start: p⁰ is the potential of the gradient part of the full
     /// right-hand side at t = 0 (so a steady flow, e.g. rigid rotation, starts in balance).
-    fn start_pressure(&mut self, parts: &mut (Part, Part)) {
+    fn start_pressure(&mut self, state: &mut State) {
         let f0 = self.frame;
         let (xu, xv) = (
             self.inputs(Component::U, &f0, &f0),
             self.inputs(Component::V, &f0, &f0),
         );
-        parts.0.total_rhs(&xu);
-        parts.1.total_rhs(&xv);
+        state.u.total_rhs(&xu);
+        state.v.total_rhs(&xv);
         let zero = Frame::default();
         plate::set_plate_faces(
-            &mut parts.0.d,
-            &mut parts.1.d,
+            &mut state.u.d,
+            &mut state.v.d,
             &self.grid,
             &self.metrics,
             &zero,
         );
         self.pressure
-            .potential(&parts.0.d, &parts.1.d, &self.grid, &mut self.p);
+            .potential(&state.u.d, &state.v.d, &self.grid, &mut self.p);
     }
 
     /// The loads on the plate after a projection; an error if they are not finite.

@@ -98,10 +98,8 @@ impl Pressure {
             + (v.get(ii, jj + 1) - v.get(ii, jj)) * grid.dx[i]
     }
 
-    /// Projects (u, v) onto the discretely divergence-free space, in place, and sets p from
-    /// φ/Δt: p = φ/Δt ([`PressureUpdate::Replace`], the predictor held no pressure gradient) or
-    /// p += φ/Δt ([`PressureUpdate::Increment`], it held the old one). Only faces between two
-    /// fluid cells change.
+    /// Projects (u, v) onto the discretely divergence-free space, in place, and sets p = φ/Δt.
+    /// Only faces between two fluid cells change.
     #[allow(clippy::too_many_arguments)]
     pub fn project(
         &mut self,
@@ -111,10 +109,20 @@ impl Pressure {
         m: &Metrics,
         dt: f64,
         p: &mut [f64],
-        update: PressureUpdate,
     ) {
+        self.project_velocity(u, v, grid, m);
+        self.set_pressure(dt, p, PressureUpdate::Replace);
+    }
+
+    /// Projects (u, v) in place and keeps the potential φ in [`Pressure::phi`] (where the caller
+    /// may transform it before [`Pressure::set_pressure`]).
+    pub fn project_velocity(&mut self, u: &mut Padded, v: &mut Padded, grid: &Grid, m: &Metrics) {
         self.solve_phi(u, v, grid);
         self.correct_velocity(u, v, m);
+    }
+
+    /// Sets p from the potential of the last projection: p = φ/Δt or p += φ/Δt.
+    pub fn set_pressure(&self, dt: f64, p: &mut [f64], update: PressureUpdate) {
         self.pressure_from_phi(dt, p, update);
     }
 

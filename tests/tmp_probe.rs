@@ -1,0 +1,3 @@
+#[path = "flow_verification.rs"]
+#[allow(dead_code)]
+mod fv;
