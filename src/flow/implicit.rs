@@ -28,10 +28,12 @@
 //! the wall where g carries fluid in, zero gradient where it carries it out) or, for prescribed
 //! boundaries, as known values at n+1.
 use super::array::Padded;
+use super::array::GHOST;
 use super::boundary::{OuterBc, VelocityFn};
 use super::frame::Frame;
+use super::metrics::Ratios;
 use super::metrics::{Component, Metrics};
-use super::thomas::{solve_line, Columns, End};
+use super::thomas::{row, solve_line, Columns, End};
 use super::zones::Zones;
 use crate::grid::Grid;
 
@@ -196,7 +198,7 @@ impl Part {
         }
     }
 
-    /// The central differences cv (q_{k+1} − q_{k−1})/2 along x and y at face (i, j) (zero in a
+    /// The transport differences D q (`thomas.rs`) along x and y at face (i, j) (zero in a
     /// direction that is not split).
     #[inline]
     fn differences(
@@ -208,17 +210,32 @@ impl Part {
         i: isize,
         j: isize,
     ) -> (f64, f64) {
-        let (cvx, cvy) = match self.c {
-            Component::U => (m.u_x.inv_cv[i as usize], m.u_y.inv_cv[j as usize]),
-            Component::V => (m.v_x.inv_cv[i as usize], m.v_y.inv_cv[j as usize]),
+        let (cvx, cvy, rx, ry) = match self.c {
+            Component::U => (
+                m.u_x.inv_cv[i as usize],
+                m.u_y.inv_cv[j as usize],
+                &m.u_xr,
+                &m.u_yr,
+            ),
+            Component::V => (
+                m.v_x.inv_cv[i as usize],
+                m.v_y.inv_cv[j as usize],
+                &m.v_xr,
+                &m.v_yr,
+            ),
+        };
+        let d = |lo: f64, mid: f64, hi: f64, t_lo: f64, t_hi: f64, cv: f64| {
+            cv * ((1.0 - t_hi) * mid + t_hi * hi - (1.0 - t_lo) * lo - t_lo * mid)
         };
         let dx = if sx {
-            0.5 * cvx * (q.get(i + 1, j) - q.get(i - 1, j))
+            let (l, c, h) = (q.get(i - 1, j), q.get(i, j), q.get(i + 1, j));
+            d(l, c, h, rx.theta(i - 1), rx.theta(i), cvx)
         } else {
             0.0
         };
         let dy = if sy {
-            0.5 * cvy * (q.get(i, j + 1) - q.get(i, j - 1))
+            let (l, c, h) = (q.get(i, j - 1), q.get(i, j), q.get(i, j + 1));
+            d(l, c, h, ry.theta(j - 1), ry.theta(j), cvy)
         } else {
             0.0
         };
@@ -266,28 +283,59 @@ impl Part {
     /// Solves (I + a L_x^{n+1}) W = R on every split row (a = γ₂Δt, frame `f1`).
     pub fn sweep_rows(&mut self, m: &Metrics, z: &Zones, f1: &Frame, a: f64, rule: GhostEnds) {
         let (ni, nj) = (self.d.ni as isize, self.d.nj as isize);
-        let (flags, rows, first, last, cv, ends) = match self.c {
-            Component::U => (&z.u_row, 0..nj, 0, ni - 1, &m.u_x.inv_cv[1..], None),
-            Component::V => (&z.v_row, 1..nj - 1, -1, ni, &m.v_x.inv_cv[..], Some(rule)),
+        let g = GHOST;
+        let (flags, rows, first, last, cv, theta, ends) = match self.c {
+            Component::U => (
+                &z.u_row,
+                0..nj,
+                0,
+                ni - 1,
+                &m.u_x.inv_cv[1..],
+                &m.u_xr.theta[g..],
+                None,
+            ),
+            Component::V => (
+                &z.v_row,
+                1..nj - 1,
+                -1,
+                ni,
+                &m.v_x.inv_cv[..],
+                &m.v_xr.theta[g - 1..],
+                Some(rule),
+            ),
         };
         let cp = &mut self.cp.data[..];
         for j in rows.filter(|&j| flags[j as usize]) {
-            let beta = 0.5 * a * line_velocity(m, f1, self.c, true, j);
+            let beta = a * line_velocity(m, f1, self.c, true, j);
             let e = ends.map_or((End::Known, End::Known), |r| ghost_ends(r, beta));
             let (s, t) = (self.d.at(first, j), self.d.at(last, j));
-            solve_line(&mut self.d.data[s..=t], cv, beta, e, cp);
+            solve_line(&mut self.d.data[s..=t], cv, theta, beta, e, cp);
         }
     }
 
     /// Solves (I + a L_y^{n+1}) Δ = W on every split column.
     pub fn sweep_columns(&mut self, m: &Metrics, z: &Zones, f1: &Frame, a: f64, rule: GhostEnds) {
         let (ni, nj) = (self.d.ni as isize, self.d.nj as isize);
-        let (flags, near, cols, rows, cv) = match self.c {
-            Component::U => (&z.u_col, &z.u_near, 1..ni - 1, 0..nj, &m.u_y.inv_cv),
-            Component::V => (&z.v_col, &z.v_near, 0..ni, 1..nj - 1, &m.v_y.inv_cv),
+        let (flags, near, cols, rows, cv, ratios) = match self.c {
+            Component::U => (
+                &z.u_col,
+                &z.u_near,
+                1..ni - 1,
+                0..nj,
+                &m.u_y.inv_cv,
+                &m.u_yr,
+            ),
+            Component::V => (
+                &z.v_col,
+                &z.v_near,
+                0..ni,
+                1..nj - 1,
+                &m.v_y.inv_cv,
+                &m.v_yr,
+            ),
         };
         for i in cols.clone().filter(|&i| flags[i as usize]) {
-            let beta = 0.5 * a * line_velocity(m, f1, self.c, false, i);
+            let beta = a * line_velocity(m, f1, self.c, false, i);
             self.beta[i as usize] = beta;
             self.ends[i as usize] = match self.c {
                 Component::U => ghost_ends(rule, beta),
@@ -300,6 +348,8 @@ impl Part {
                     cols: seg,
                     rows: rows.clone(),
                     cv,
+                    theta: &ratios.theta,
+                    theta_offset: GHOST as isize,
                     beta: &self.beta,
                     ends: &self.ends,
                 };
@@ -374,24 +424,38 @@ impl Part {
     /// increments (for u the boundary faces, with the corner ghosts; for v, prescribed boundaries
     /// only, the ghost columns). Without this the factorisation error at the ends would be
     /// O(Δt²) per step at large Courant numbers.
-    pub fn intermediate_ends(&mut self, m: &Metrics, z: &Zones, f1: &Frame, a: f64, rule: GhostEnds) {
+    pub fn intermediate_ends(
+        &mut self,
+        m: &Metrics,
+        z: &Zones,
+        f1: &Frame,
+        a: f64,
+        rule: GhostEnds,
+    ) {
         let (ni, nj) = (self.d.ni as isize, self.d.nj as isize);
         match self.c {
             Component::U => {
                 for ie in [0, ni - 1].into_iter().filter(|&i| z.u_col[i as usize]) {
-                    let beta = 0.5 * a * line_velocity(m, f1, self.c, false, ie);
+                    let beta = a * line_velocity(m, f1, self.c, false, ie);
                     if let (End::Relation(lo), End::Relation(hi)) = ghost_ends(rule, beta) {
                         self.d.set(ie, -1, lo * self.d.get(ie, 0));
                         self.d.set(ie, nj, hi * self.d.get(ie, nj - 1));
                     }
-                    apply_along_column(&mut self.d, ie, 0..nj, beta, &m.u_y.inv_cv);
+                    apply_along_column(&mut self.d, ie, 0..nj, beta, &m.u_y.inv_cv, &m.u_yr);
                 }
             }
             Component::V if rule == GhostEnds::Known => {
                 for (ie, inner) in [(-1, 0), (ni, ni - 1)] {
                     if z.v_col[inner as usize] {
-                        let beta = 0.5 * a * line_velocity(m, f1, self.c, false, ie);
-                        apply_along_column(&mut self.d, ie, 1..nj - 1, beta, &m.v_y.inv_cv);
+                        let beta = a * line_velocity(m, f1, self.c, false, ie);
+                        apply_along_column(
+                            &mut self.d,
+                            ie,
+                            1..nj - 1,
+                            beta,
+                            &m.v_y.inv_cv,
+                            &m.v_yr,
+                        );
                     }
                 }
             }
@@ -426,13 +490,21 @@ impl Part {
     }
 }
 
-/// d ← (I + β D_y) d in column i over `rows` (D_y q_j = cv_j (q_{j+1} − q_{j−1}), the rows just
-/// outside read as they are).
-fn apply_along_column(d: &mut Padded, i: isize, rows: std::ops::Range<isize>, beta: f64, cv: &[f64]) {
+/// d ← (I + β D_y) d in column i over `rows` (D_y as in `thomas.rs`, the rows just outside read
+/// as they are).
+fn apply_along_column(
+    d: &mut Padded,
+    i: isize,
+    rows: std::ops::Range<isize>,
+    beta: f64,
+    cv: &[f64],
+    ratios: &Ratios,
+) {
     let mut prev = d.get(i, rows.start - 1);
     for j in rows {
         let cur = d.get(i, j);
-        d.set(i, j, cur - beta * cv[j as usize] * (d.get(i, j + 1) - prev));
+        let (lower, diag, upper) = row(beta, cv[j as usize], ratios.theta(j - 1), ratios.theta(j));
+        d.set(i, j, lower * prev + diag * cur + upper * d.get(i, j + 1));
         prev = cur;
     }
 }
@@ -481,29 +553,28 @@ pub fn factored_potential(
     a: f64,
 ) {
     let (nx, ny) = (grid.nx, grid.ny);
-    for j in 0..ny {
-        let half = 0.5 * a * m.u_y.inv_cv[j];
-        for i in 0..nx {
-            let k = i + nx * j;
-            scratch[k] = phi[k];
-            if z.v_col[i] {
-                let lo = if j > 0 { phi[k - nx] } else { phi[k] };
-                let hi = if j + 1 < ny { phi[k + nx] } else { phi[k] };
-                scratch[k] -= half * f.gy(m.x.centre(i as isize)) * (hi - lo);
-            }
+    // Cells along y have the points and faces of u along y; along x those of v along x.
+    let (ry, rx) = (&m.u_yr, &m.v_xr);
+    scratch.copy_from_slice(phi);
+    for i in (0..nx).filter(|&i| z.v_col[i]) {
+        let beta = a * f.gy(m.x.centre(i as isize));
+        for j in 0..ny {
+            let jj = j as isize;
+            let (lo, c) = (j.saturating_sub(1), j);
+            let hi = (j + 1).min(ny - 1);
+            let (l, d, u) = row(beta, m.u_y.inv_cv[j], ry.theta(jj - 1), ry.theta(jj));
+            scratch[i + nx * c] = l * phi[i + nx * lo] + d * phi[i + nx * c] + u * phi[i + nx * hi];
         }
     }
-    for j in 0..ny {
-        let row = &mut phi[nx * j..nx * (j + 1)];
+    phi.copy_from_slice(scratch);
+    for j in (0..ny).filter(|&j| z.u_row[j]) {
+        let beta = a * f.gx(m.y.centre(j as isize));
         let src = &scratch[nx * j..nx * (j + 1)];
-        row.copy_from_slice(src);
-        if z.u_row[j] {
-            let g = 0.5 * a * f.gx(m.y.centre(j as isize));
-            for i in 0..nx {
-                let lo = src[i.saturating_sub(1)];
-                let hi = src[(i + 1).min(nx - 1)];
-                row[i] -= g * m.v_x.inv_cv[i] * (hi - lo);
-            }
+        let dst = &mut phi[nx * j..nx * (j + 1)];
+        for i in 0..nx {
+            let ii = i as isize;
+            let (l, d, u) = row(beta, m.v_x.inv_cv[i], rx.theta(ii - 1), rx.theta(ii));
+            dst[i] = l * src[i.saturating_sub(1)] + d * src[i] + u * src[(i + 1).min(nx - 1)];
         }
     }
 }

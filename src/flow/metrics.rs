@@ -78,16 +78,20 @@ pub struct Metrics {
 
 /// Spacing ratios along a line of points p_k (ghosts included), for the face k between p_k and
 /// p_{k+1}: `plus[k]` = (p_{k+1} − p_k)/(p_k − p_{k−1}) (flow towards +, upstream gap below),
-/// `minus[k]` = (p_{k+1} − p_k)/(p_{k+2} − p_{k+1}). Indexed k + GHOST; 1 where undefined.
+/// `minus[k]` = (p_{k+1} − p_k)/(p_{k+2} − p_{k+1}), and `theta[k]` = (f_k − p_k)/(p_{k+1} − p_k)
+/// the face's fractional position (½ where faces are midpoints). Indexed k + GHOST; 1 (ratios)
+/// and ½ (theta) where undefined.
 #[derive(Clone, Debug, Default)]
 pub struct Ratios {
     pub plus: Vec<f64>,
     pub minus: Vec<f64>,
+    pub theta: Vec<f64>,
 }
 
 impl Ratios {
-    /// The ratios of points stored with GHOST ghosts before the first interior point.
-    pub fn new(points: &[f64]) -> Ratios {
+    /// The ratios of points stored with GHOST ghosts before the first interior point; `faces[k]`
+    /// is the face after point k (stored alike), if any.
+    pub fn new(points: &[f64], faces: &[f64]) -> Ratios {
         let n = points.len();
         let gap = |k: usize| points[k + 1] - points[k];
         let plus = (0..n)
@@ -102,7 +106,19 @@ impl Ratios {
         let minus = (0..n)
             .map(|k| if k + 2 < n { gap(k) / gap(k + 1) } else { 1.0 })
             .collect();
-        Ratios { plus, minus }
+        let theta = (0..n)
+            .map(|k| match faces.get(k) {
+                Some(f) if k + 1 < n => (f - points[k]) / gap(k),
+                _ => 0.5,
+            })
+            .collect();
+        Ratios { plus, minus, theta }
+    }
+
+    /// The fractional position of face k (interior numbering) from point k.
+    #[inline(always)]
+    pub fn theta(&self, k: isize) -> f64 {
+        self.theta[(k + GHOST as isize) as usize]
     }
 
     /// Ratio for the face k (interior numbering) with flow towards + or −.
@@ -145,10 +161,10 @@ impl Metrics {
             v_y: faces(&y, grid.ny),
             wx_left: low_weight(&x, grid.nx),
             wy_low: low_weight(&y, grid.ny),
-            u_xr: Ratios::new(&x.nodes),
-            u_yr: Ratios::new(&y.centres),
-            v_xr: Ratios::new(&x.centres),
-            v_yr: Ratios::new(&y.nodes),
+            u_xr: Ratios::new(&x.nodes, &x.centres),
+            u_yr: Ratios::new(&y.centres, &y.nodes[1..]),
+            v_xr: Ratios::new(&x.centres, &x.nodes[1..]),
+            v_yr: Ratios::new(&y.nodes, &y.centres),
             x,
             y,
         }

@@ -24,12 +24,23 @@ pub fn face_value(far: f64, up: f64, down: f64) -> f64 {
 }
 
 /// [`face_value`] on a stretched line: the upstream difference is rescaled to the gap of the face
-/// (`ratio` = downstream gap / upstream gap, see [`Ratios`]), so a linear profile gives the mean
-/// of `up` and `down` on any spacing. Used where the grid transport is implicit, whose central
-/// operator takes the same mean: the two then cancel exactly for linear fields (rigid rotation).
+/// (`ratio` = downstream gap / upstream gap, see [`Ratios`]) and the face lies at the fraction
+/// `beta` of the way from `up` to `down`, so a linear profile gives its exact value on the face
+/// on any spacing (reduces to [`face_value`] on a uniform line). Used where the grid transport is
+/// implicit, whose central operator interpolates linearly too: the two then cancel exactly for
+/// linear fields (rigid rotation).
 #[inline(always)]
-pub fn face_value_scaled(far: f64, up: f64, down: f64, ratio: f64) -> f64 {
-    koren(up, (up - far) * ratio, down - up)
+pub fn face_value_scaled(far: f64, up: f64, down: f64, ratio: f64, beta: f64) -> f64 {
+    let dd = down - up;
+    let dc = (up - far) * ratio;
+    if dd * dc <= 0.0 {
+        return up;
+    }
+    let a = (2.0 * dc)
+        .abs()
+        .min(((2.0 * dd + dc) / 3.0).abs())
+        .min((dd / beta).abs());
+    up + beta * a.copysign(dd)
 }
 
 /// `up` plus half the limited slope: ψ(r)·dd with r = dc/dd and ψ = min(2r, (2 + r)/3, 2).
@@ -59,8 +70,8 @@ fn upwind<const SCALED: bool>(
     match (plus, SCALED) {
         (true, false) => face_value(m1, p0, p1),
         (false, false) => face_value(p2, p1, p0),
-        (true, true) => face_value_scaled(m1, p0, p1, ratios.get(k, true)),
-        (false, true) => face_value_scaled(p2, p1, p0, ratios.get(k, false)),
+        (true, true) => face_value_scaled(m1, p0, p1, ratios.get(k, true), ratios.theta(k)),
+        (false, true) => face_value_scaled(p2, p1, p0, ratios.get(k, false), 1.0 - ratios.theta(k)),
     }
 }
 

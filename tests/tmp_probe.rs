@@ -1,3 +1,0 @@
-#[path = "flow_verification.rs"]
-#[allow(dead_code)]
-mod fv;
