@@ -10,6 +10,7 @@ use crate::body::{AbStart, PlateProps};
 use crate::config::PhysicalPlate;
 use crate::flow::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
 use crate::grid::{GridSpec, Stretch};
+use crate::param::{check_whole, Param};
 use crate::sim::{BodyConfig, Case, RunConfig, TimeControl};
 
 /// Options shared by every case.
@@ -194,19 +195,6 @@ pub struct FreeArgs {
     pub record: RecordArgs,
 }
 
-#[derive(Args, Debug)]
-pub struct BenchArgs {
-    /// Cells per chord of the grids to time (each with the default extent and growth cap).
-    #[arg(long, value_delimiter = ',', default_values_t = vec![32, 64, 128, 384])]
-    pub resolutions: Vec<usize>,
-    /// Steps timed per grid (after 5 warm-up steps).
-    #[arg(long, default_value_t = 50)]
-    pub steps: usize,
-    /// Write the results as JSON to this file.
-    #[arg(long, value_name = "FILE")]
-    pub json: Option<PathBuf>,
-}
-
 impl SolverArgs {
     fn grid(&self) -> GridSpec {
         if self.seed_grid {
@@ -332,6 +320,9 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
         Command::Bench(_) => return Err(ArgError::NotACase("bench")),
     };
     cfg.validate()?;
+    if let Some((solver, _)) = cmd.case_args() {
+        check_whole(Param::Threads, solver.threads, 0, 256)?;
+    }
     Ok(cfg)
 }
 

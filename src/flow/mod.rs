@@ -19,6 +19,7 @@
 //! The hot path allocates nothing after [`FlowSolver::new`]. The u and v halves of each phase run
 //! in parallel (`rayon::join`); called from inside a rayon pool that allocates nothing either.
 pub mod array;
+pub mod band;
 pub mod boundary;
 pub mod frame;
 pub mod implicit;
@@ -26,7 +27,7 @@ pub mod metrics;
 pub mod momentum;
 pub mod plate;
 pub mod pressure;
-pub mod thomas;
+pub mod transport;
 pub mod zones;
 
 pub use boundary::{OuterBc, VelocityFn};
@@ -35,7 +36,7 @@ pub use plate::BodyAxesLoads;
 
 use array::Padded;
 use boundary::Outflow;
-use implicit::{Inputs, Part, State, Weights};
+use implicit::{GhostEnds, Inputs, Part, State, Weights};
 use metrics::{Component, Metrics};
 use momentum::RhsContext;
 use pressure::{Pressure, PressureUpdate};
@@ -185,7 +186,7 @@ impl FlowSolver {
             FarFieldScheme::Implicit => {
                 let z = Zones::new(&grid, params.near_x, params.near_y);
                 z.check_plate(&grid).map_err(FlowError::Setup)?;
-                (z, Some(Box::new(State::new(nx, ny))))
+                (z, Some(Box::new(State::new(nx, ny, &metrics))))
             }
         };
         let mut s = FlowSolver {
@@ -380,7 +381,7 @@ impl FlowSolver {
         self.frame = next;
         self.implicit_boundary(pu, pv, dt);
         let (m, z, a) = (&self.metrics, &self.zones, w.g2 * dt);
-        let rule = implicit::ghost_rule(&self.outer);
+        let rule = GhostEnds::of(&self.outer);
         let (u, v) = (&mut self.u, &mut self.v);
         rayon::join(
             || {
@@ -409,15 +410,16 @@ impl FlowSolver {
         self.pressure
             .project_velocity(&mut self.u, &mut self.v, &self.grid, &self.metrics);
         if let Some(state) = &mut self.implicit {
-            let a = state.g2 * dt;
+            let t = state.g2 * dt;
             implicit::factored_potential(
                 &mut self.pressure.phi,
                 &mut state.cells,
+                (&state.u, &state.v),
                 &self.grid,
                 &self.metrics,
                 &self.zones,
                 &self.frame,
-                a,
+                t,
             );
         }
         self.pressure
