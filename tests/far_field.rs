@@ -70,82 +70,11 @@ fn vortex_moments(s: &FlowSolver, at: (f64, f64), radius: f64) -> (f64, (f64, f6
     (circ, (mx / circ, my / circ))
 }
 
-#[test]
-fn probe_lamb() {
-    use platefall::flow::FarFieldScheme::*;
-    for (near, dtr) in [
-        (1000.0, 0.0025),
-        (1000.0, 0.00125),
-        (1.0, 0.01),
-        (1.0, 0.005),
-        (1.0, 0.0025),
-        (1.0, 0.00125),
-    ] {
-        lamb(
-            16,
-            if near > 100.0 { Implicit } else { Implicit },
-            near,
-            dtr,
-        );
-    }
-}
-
-fn lamb(n: usize, scheme: platefall::flow::FarFieldScheme, near: f64, dtr: f64) {
-    let vortex = LambOseen {
-        gamma: 1.0,
-        core: 1.0,
-        centre: (8.0, 0.0),
-        nu: 0.01,
-        omega: 2.0,
-    };
-    let spec = GridSpec {
-        resolution: n,
-        thickness: 1.0 / n as f64,
-        extent_x: 12.0,
-        extent_y: 12.0,
-        stretch: Stretch::GrowthCap(1.03),
-    };
-    let frame = Frame {
-        u0: 0.0,
-        v0: 0.0,
-        omega: vortex.omega,
-    };
-    let params = FlowParams {
-        re: 1.0 / vortex.nu,
-        far_field: scheme,
-        near_x: near,
-        near_y: near,
-        ..FlowParams::default()
-    };
-    let exact = move |x: f64, y: f64, t: f64| vortex.body(x, y, t);
-    let grid = Grid::new(&spec).unwrap().without_plate();
-    let mut s = FlowSolver::new(grid, params, OuterBc::Prescribed(Box::new(exact)), frame).unwrap();
-    s.set_velocity(|x, y| vortex.body(x, y, 0.0));
-    let t_end = PI / vortex.omega;
-    let dt_rule = dtr;
-    while s.t < t_end - 1e-12 {
-        let limit = s.prepare().unwrap();
-        let n_left = ((t_end - s.t) / dt_rule.min(limit)).ceil().max(1.0);
-        s.advance((t_end - s.t) / n_left, frame).unwrap();
-    }
-    let sigma = vortex.sigma2(t_end).sqrt();
-    let at = vortex.centre_body(t_end);
-    let (circ, (cx, cy)) = vortex_moments(&s, at, 3.0 * sigma);
-    eprintln!(
-        "N {n} {scheme:?} near {near} dt {dtr}: steps {} circ {circ:.5} off by {:.4} ({:.4},{:.4})",
-        s.steps,
-        (cx - at.0).hypot(cy - at.1),
-        cx - at.0,
-        cy - at.1
-    );
-}
-
-#[test]
-fn a_lamb_oseen_vortex_crosses_the_far_field_of_a_spinning_grid() {
-    // A vortex 8 chords out, the grid spinning at θ̇ = 2 for half a turn: relative to the grid
-    // the vortex sweeps 25 chords at 16 c/U, through the split columns (fine rows through the
-    // plate's level), the corners and the split rows (fine columns over the chord), and ends on
-    // the other side. Δt is the seed's rotation rule 0.005/θ̇, 7× what the explicit scheme allows.
+/// The vortex 8 chords out of a grid spinning at θ̇ = 2 (N = 16, 12 chords of extent, 3 %
+/// growth: cells ≈ 0.27 c where the vortex passes), run for half a turn with steps of at most
+/// `dt`: (circulation within 3σ of the exact centre, distance of the vorticity centroid from it,
+/// steps, Δt over the explicit scheme's limit).
+fn half_a_turn(dt: f64) -> (f64, f64, u64, f64) {
     let vortex = LambOseen {
         gamma: 1.0,
         core: 1.0,
@@ -165,49 +94,186 @@ fn a_lamb_oseen_vortex_crosses_the_far_field_of_a_spinning_grid() {
         v0: 0.0,
         omega: vortex.omega,
     };
-    let params = FlowParams {
-        re: 1.0 / vortex.nu,
+    let solver = |params: FlowParams| {
+        let exact = move |x: f64, y: f64, t: f64| vortex.body(x, y, t);
+        let grid = Grid::new(&spec).unwrap().without_plate();
+        let mut s =
+            FlowSolver::new(grid, params, OuterBc::Prescribed(Box::new(exact)), frame).unwrap();
+        s.set_velocity(|x, y| vortex.body(x, y, 0.0));
+        s
+    };
+    let re = 1.0 / vortex.nu;
+    let explicit_limit = solver(FlowParams::explicit(re)).prepare().unwrap();
+    let mut s = solver(FlowParams {
+        re,
         ..FlowParams::default()
-    };
-    let exact = move |x: f64, y: f64, t: f64| vortex.body(x, y, t);
-    let grid = Grid::new(&spec).unwrap().without_plate();
-    let mut s = FlowSolver::new(grid, params, OuterBc::Prescribed(Box::new(exact)), frame).unwrap();
-    s.set_velocity(|x, y| vortex.body(x, y, 0.0));
+    });
     let t_end = PI / vortex.omega;
-    let dt_rule = 0.005 / vortex.omega;
-    let explicit_limit = {
-        let mut e = FlowSolver::new(
-            Grid::new(&spec).unwrap().without_plate(),
-            FlowParams::explicit(1.0 / vortex.nu),
-            OuterBc::Prescribed(Box::new(exact)),
-            frame,
-        )
-        .unwrap();
-        e.set_velocity(|x, y| vortex.body(x, y, 0.0));
-        e.prepare().unwrap()
-    };
-    eprintln!(
-        "Δt {dt_rule:.2e} = {:.1} × the explicit limit",
-        dt_rule / explicit_limit
-    );
-    let window = 3.0 * vortex.sigma2(0.0).sqrt();
-    let (c0, p0) = vortex_moments(&s, vortex.centre_body(0.0), window);
+    let mut ratio: f64 = f64::INFINITY;
     while s.t < t_end - 1e-12 {
-        let limit = s.prepare().unwrap();
-        let n_left = ((t_end - s.t) / dt_rule.min(limit)).ceil().max(1.0);
+        let step = dt.min(s.prepare().unwrap());
+        let n_left = ((t_end - s.t) / step).ceil().max(1.0);
+        ratio = ratio.min((t_end - s.t) / n_left / explicit_limit);
         s.advance((t_end - s.t) / n_left, frame).unwrap();
     }
-    let sigma = vortex.sigma2(t_end).sqrt();
     let at = vortex.centre_body(t_end);
-    let (circ, (cx, cy)) = vortex_moments(&s, at, 3.0 * sigma);
+    let (circ, (cx, cy)) = vortex_moments(&s, at, 3.0 * vortex.sigma2(t_end).sqrt());
     let exact_circ = vortex.gamma * (1.0 - (-9.0f64).exp());
-    let miss = (cx - at.0).hypot(cy - at.1);
-    eprintln!(
-        "start: circulation {c0:.5}, centroid off by {:.4}; after half a turn ({} steps): \
-         circulation {circ:.5} (exact {exact_circ:.5}), centroid ({cx:.4}, {cy:.4}) vs ({:.4}, {:.4}), off by {miss:.4}",
-        (p0.0 - vortex.centre.0).hypot(p0.1 - vortex.centre.1),
+    (
+        circ / exact_circ,
+        (cx - at.0).hypot(cy - at.1),
         s.steps,
-        at.0,
-        at.1
+        ratio,
+    )
+}
+
+#[test]
+fn a_lamb_oseen_vortex_crosses_the_far_field_of_a_spinning_grid() {
+    // Relative to the grid the vortex sweeps 25 chords at 16 c/U: through the split columns
+    // (fine rows at the plate's level), the corners and the split rows (fine columns over the
+    // chord), ending on the other side. At the seed's rotation rule (Δt = 0.0025, twice the
+    // explicit limit on this grid) and at 4× that step (8× the explicit limit).
+    //
+    // Tolerances: the centroid within 0.05 c of the exact (inertially fixed) centre, a fifth of
+    // the local cell; the circulation within 3σ within 1 % of the exact Γ(1 − e⁻⁹). Today's
+    // explicit scheme on this grid gives 0.017 c and +0.3 %: the tolerances allow the
+    // discretisation error of 4-cell-wide cores, not a scheme that moves or dissipates vortices.
+    for dt in [0.0025, 0.01] {
+        let (circ, miss, steps, ratio) = half_a_turn(dt);
+        eprintln!(
+            "Δt ≤ {dt} ({ratio:.1}× the explicit limit, {steps} steps): circulation {circ:.4} of \
+             exact, centroid {miss:.4} c from the exact centre"
+        );
+        assert!(ratio >= 1.9, "Δt only {ratio:.2}× the explicit limit");
+        assert!(
+            miss < 0.05,
+            "the vortex is {miss:.4} c from where it should be"
+        );
+        assert!((circ - 1.0).abs() < 0.01, "circulation {circ:.4} of exact");
+    }
+}
+
+mod common;
+use platefall::sim::{RunRecord, RunStatus};
+
+/// The card's free fall with today's explicit far field, turns 1–5 after release (the summary's
+/// developed part: whole turns 2..=5), measured once with `platefall free --resolution N
+/// --turns 5 --far-field explicit` (byte-identical to the scheme before issue 8): (mean V,
+/// mean θ̇, mean γ) in c/U units.
+const EXPLICIT_N32: (f64, f64, f64) = (1.156367689192568, 2.9623540744233803, -0.3734215277491281);
+const EXPLICIT_N64: (f64, f64, f64) =
+    (1.1671800289155436, 2.4696201937131903, -0.39501419012571615);
+
+/// Runs the card at N for 5 turns and compares its means with the explicit scheme's: V and θ̇
+/// within 2 %, γ within 0.02 rad. Returns the run.
+fn card_agrees_with_the_explicit_scheme(n: usize, explicit: (f64, f64, f64)) -> RunRecord {
+    let res = n.to_string();
+    let (_, rec, s) = common::run(&["free", "--resolution", &res, "--turns", "5", "--no-save"]);
+    assert_eq!(rec.status, RunStatus::Completed);
+    let (v, w, g) = (
+        s.mean_speed.unwrap(),
+        s.mean_omega.unwrap(),
+        s.mean_gamma.unwrap(),
     );
+    eprintln!(
+        "N = {n}: V {v:.4} ({:+.2} %), θ̇ {w:.4} ({:+.2} %), γ {g:.4} ({:+.4} rad) against the explicit scheme",
+        100.0 * (v / explicit.0 - 1.0),
+        100.0 * (w / explicit.1 - 1.0),
+        g - explicit.2
+    );
+    assert!(
+        (v / explicit.0 - 1.0).abs() < 0.02,
+        "mean V {v} vs {}",
+        explicit.0
+    );
+    assert!(
+        (w / explicit.1 - 1.0).abs() < 0.02,
+        "mean θ̇ {w} vs {}",
+        explicit.1
+    );
+    assert!(
+        (g - explicit.2).abs() < 0.02,
+        "mean γ {g} vs {}",
+        explicit.2
+    );
+    rec
+}
+
+/// Steps per turn over whole turns 2..=T after release.
+fn steps_per_turn(rec: &RunRecord) -> f64 {
+    let first = rec.samples.iter().find(|x| x.t >= rec.t_release).unwrap();
+    let turn = |k: f64| {
+        rec.samples
+            .iter()
+            .find(|x| (x.theta - first.theta).abs() >= k * 2.0 * PI)
+            .map(|x| x.step)
+            .unwrap()
+    };
+    let turns = ((rec.samples.last().unwrap().theta - first.theta).abs() / (2.0 * PI)).floor();
+    (turn(turns) - turn(1.0)) as f64 / (turns - 1.0)
+}
+
+#[test]
+fn the_card_at_n32_autorotates_as_with_the_explicit_far_field() {
+    let rec = card_agrees_with_the_explicit_scheme(32, EXPLICIT_N32);
+    // The seed's rotation rule alone needs 2π/0.005 = 1257 steps per turn; the explicit far
+    // field took 6,190 here.
+    let spt = steps_per_turn(&rec);
+    eprintln!("N = 32: {spt:.0} steps per turn");
+    assert!(spt <= 1500.0, "{spt} steps per turn");
+}
+
+#[test]
+#[ignore = "N = 64: about 2 minutes on two cores (plus a 2-turn run at twice the extent)"]
+fn the_card_at_n64_autorotates_as_with_the_explicit_far_field_in_few_steps() {
+    let rec = card_agrees_with_the_explicit_scheme(64, EXPLICIT_N64);
+    let spt = steps_per_turn(&rec);
+    // Doubling the extent: the far field no longer sets Δt.
+    let (_, wide, _) = common::run(&[
+        "free",
+        "--resolution",
+        "64",
+        "--turns",
+        "3",
+        "--extent",
+        "30",
+        "--no-save",
+    ]);
+    let spt_wide = steps_per_turn(&wide);
+    eprintln!(
+        "N = 64: {spt:.0} steps per turn at extent 15, {spt_wide:.0} at 30 (explicit: 12,400)"
+    );
+    assert!(spt <= 1500.0, "{spt} steps per turn");
+    assert!((spt_wide / spt - 1.0).abs() < 0.10, "{spt_wide} vs {spt}");
+}
+
+#[test]
+fn forced_rotation_takes_as_many_steps_per_turn_at_any_extent() {
+    // A plate forced to turn at θ̇ = 2.5 (the card's developed rate) at N = 32: over the second
+    // turn, doubling the extent from 15 to 30 chords changes the steps by less than 10 % (with the
+    // explicit far field they double: 2π·15.5·N/CFL per turn).
+    let steps = |extent: &str| {
+        let (_, rec, _) = common::run(&[
+            "forced",
+            "--rate",
+            "2.5",
+            "--spinup",
+            "1",
+            "--resolution",
+            "32",
+            "--extent",
+            extent,
+            "--t-end",
+            "6.1",
+            "--no-save",
+        ]);
+        assert_eq!(rec.status, RunStatus::Completed);
+        // Steps over the second turn: t from 1 + 2π/2.5 to 1 + 4π/2.5.
+        let (t0, t1) = (1.0 + 2.0 * PI / 2.5, 1.0 + 4.0 * PI / 2.5);
+        rec.samples.iter().filter(|x| x.t > t0 && x.t <= t1).count() as f64
+    };
+    let (a, b) = (steps("15"), steps("30"));
+    eprintln!("steps over a turn at θ̇ = 2.5: {a} at extent 15, {b} at extent 30");
+    assert!((b / a - 1.0).abs() < 0.10, "{b} vs {a}");
+    assert!(a <= 1500.0, "{a} steps per turn");
 }

@@ -18,6 +18,7 @@
 //!
 //! The hot path allocates nothing after [`FlowSolver::new`]. The u and v halves of each phase run
 //! in parallel (`rayon::join`); called from inside a rayon pool that allocates nothing either.
+mod advance_implicit;
 pub mod array;
 pub mod band;
 pub mod boundary;
@@ -36,10 +37,10 @@ pub use plate::BodyAxesLoads;
 
 use array::Padded;
 use boundary::Outflow;
-use implicit::{GhostEnds, Inputs, Part, State, Weights};
+use implicit::State;
 use metrics::{Component, Metrics};
 use momentum::RhsContext;
-use pressure::{Pressure, PressureUpdate};
+use pressure::Pressure;
 use zones::Zones;
 
 use crate::grid::Grid;
@@ -127,8 +128,8 @@ pub enum FlowError {
     /// The solution blew up at time `t` (after `step` steps); `reason` says what was seen.
     #[error("the flow solution diverged at t = {t:.4} (step {step}): {reason}")]
     Diverged { t: f64, step: u64, reason: String },
-    /// The pressure operator could not be built.
-    #[error("the pressure operator could not be built: {0}")]
+    /// The solver could not be set up (the pressure operator, or the implicit zones).
+    #[error("the flow solver could not be set up: {0}")]
     Setup(String),
 }
 
@@ -181,14 +182,7 @@ impl FlowSolver {
         let dt_visc =
             params.visc_safety / (4.0 * nu * (1.0 / (min_dx * min_dx) + 1.0 / (min_dy * min_dy)));
         let (nx, ny) = (grid.nx, grid.ny);
-        let (zones, implicit) = match params.far_field {
-            FarFieldScheme::Explicit => (Zones::none(&grid), None),
-            FarFieldScheme::Implicit => {
-                let z = Zones::new(&grid, params.near_x, params.near_y);
-                z.check_plate(&grid).map_err(FlowError::Setup)?;
-                (z, Some(Box::new(State::new(nx, ny, &metrics))))
-            }
-        };
+        let (zones, implicit) = far_field_state(&grid, &params, &metrics)?;
         let mut s = FlowSolver {
             u: Padded::zeros(nx + 1, ny),
             v: Padded::zeros(nx, ny + 1),
@@ -345,7 +339,7 @@ impl FlowSolver {
     }
 
     /// The outer boundary's normal velocities at `t` for the current frame, net flux removed.
-    fn set_outer_normals(&mut self, t: f64, dt: f64, outflow: Outflow) {
+    pub(super) fn set_outer_normals(&mut self, t: f64, dt: f64, outflow: Outflow) {
         boundary::set_outer_normals(
             &mut self.u,
             &mut self.v,
@@ -356,130 +350,6 @@ impl FlowSolver {
             dt,
             outflow,
         );
-    }
-
-    /// The predictor of the implicit far field (see `implicit.rs`): the right-hand side, the
-    /// boundary values at n+1, the row and column sweeps, u* = uⁿ + Δ, and the plate faces.
-    fn predict_implicit(&mut self, dt: f64, next: Frame) {
-        let Some(mut state) = self.implicit.take() else {
-            return;
-        };
-        if self.steps == 0 {
-            self.start_pressure(&mut state);
-        }
-        let w = Weights::new(dt, if self.steps == 0 { 0.0 } else { self.dt_prev });
-        state.g2 = w.g2;
-        let f0 = self.frame;
-        let (pu, pv) = (&mut state.u, &mut state.v);
-        let (xu, xv) = (
-            self.inputs(Component::U, &f0, &next),
-            self.inputs(Component::V, &f0, &next),
-        );
-        rayon::join(|| pu.assemble(&xu, &w, dt), || pv.assemble(&xv, &w, dt));
-        std::mem::swap(&mut self.hu, &mut self.hu_old);
-        std::mem::swap(&mut self.hv, &mut self.hv_old);
-        self.frame = next;
-        self.implicit_boundary(pu, pv, dt);
-        let (m, z, a) = (&self.metrics, &self.zones, w.g2 * dt);
-        let rule = GhostEnds::of(&self.outer);
-        let (u, v) = (&mut self.u, &mut self.v);
-        rayon::join(
-            || {
-                pu.intermediate_ends(m, z, &next, a, rule);
-                pu.sweep_rows(m, z, &next, a, rule);
-                pu.sweep_columns(m, z, &next, a, rule);
-                pu.apply(u);
-            },
-            || {
-                pv.intermediate_ends(m, z, &next, a, rule);
-                pv.sweep_rows(m, z, &next, a, rule);
-                pv.sweep_columns(m, z, &next, a, rule);
-                pv.apply(v);
-            },
-        );
-        self.implicit = Some(state);
-        self.impose_plate();
-    }
-
-    /// The projection of the implicit far field: the velocity as usual, and the incremental
-    /// pressure p += A φ/Δt with A = (I + a L_x)(I + a L_y) the factored operator of the
-    /// predictor applied to φ (`implicit::factored_potential`). Adding φ/Δt alone would feed the
-    /// factorisation error back into the next predictor through the pressure, which diverges
-    /// where both directions are implicit at Courant numbers ≳ 1; with A it cancels.
-    fn project_incremental(&mut self, dt: f64) {
-        self.pressure
-            .project_velocity(&mut self.u, &mut self.v, &self.grid, &self.metrics);
-        if let Some(state) = &mut self.implicit {
-            let t = state.g2 * dt;
-            implicit::factored_potential(
-                &mut self.pressure.phi,
-                &mut state.cells,
-                (&state.u, &state.v),
-                &self.grid,
-                &self.metrics,
-                &self.zones,
-                &self.frame,
-                t,
-            );
-        }
-        self.pressure
-            .set_pressure(dt, &mut self.p, PressureUpdate::Increment);
-    }
-
-    /// What a component's right-hand side reads (the frames at n and n+1).
-    fn inputs<'a>(&'a self, c: Component, f0: &'a Frame, f1: &'a Frame) -> Inputs<'a> {
-        let (q, h, h_old) = match c {
-            Component::U => (&self.u, &self.hu, &self.hu_old),
-            Component::V => (&self.v, &self.hv, &self.hv_old),
-        };
-        Inputs {
-            q,
-            h,
-            h_old,
-            p: &self.p,
-            grid: &self.grid,
-            m: &self.metrics,
-            zones: &self.zones,
-            f0,
-            f1,
-        }
-    }
-
-    /// The outer normal velocities at n+1 (implicit outflow, from the interior at n), kept as the
-    /// known ends of the sweeps; for a prescribed boundary also the tangential ghosts at n+1.
-    fn implicit_boundary(&mut self, pu: &mut Part, pv: &mut Part, dt: f64) {
-        let t_next = self.t + dt;
-        pu.save_boundary(&self.u);
-        pv.save_boundary(&self.v);
-        self.set_outer_normals(t_next, dt, Outflow::Implicit);
-        pu.finish_boundary(&self.u);
-        pv.finish_boundary(&self.v);
-        if let OuterBc::Prescribed(f) = &self.outer {
-            pu.prescribed_ghosts(&self.u, &self.metrics, f, t_next);
-            pv.prescribed_ghosts(&self.v, &self.metrics, f, t_next);
-        }
-    }
-
-    /// The incremental pressure's start: p⁰ is the potential of the gradient part of the full
-    /// right-hand side at t = 0 (so a steady flow, e.g. rigid rotation, starts in balance).
-    fn start_pressure(&mut self, state: &mut State) {
-        let f0 = self.frame;
-        let (xu, xv) = (
-            self.inputs(Component::U, &f0, &f0),
-            self.inputs(Component::V, &f0, &f0),
-        );
-        state.u.total_rhs(&xu);
-        state.v.total_rhs(&xv);
-        let zero = Frame::default();
-        plate::set_plate_faces(
-            &mut state.u.d,
-            &mut state.v.d,
-            &self.grid,
-            &self.metrics,
-            &zero,
-        );
-        self.pressure
-            .potential(&state.u.d, &state.v.d, &self.grid, &mut self.p);
     }
 
     /// The loads on the plate after a projection; an error if they are not finite.
@@ -501,7 +371,7 @@ impl FlowSolver {
     }
 
     /// No-slip: the faces on and inside the plate take the grid-point velocity g of this frame.
-    fn impose_plate(&mut self) {
+    pub(super) fn impose_plate(&mut self) {
         plate::set_plate_faces(
             &mut self.u,
             &mut self.v,
@@ -557,6 +427,24 @@ impl FlowSolver {
     /// Interior u on vertical faces ((nx+1) × ny) and v on horizontal faces (nx × (ny+1)).
     pub fn velocity_arrays(&self) -> (Vec<f64>, Vec<f64>) {
         (self.u.interior(), self.v.interior())
+    }
+}
+
+/// The split lines and the implicit workspaces for the far-field scheme of `params` (none for
+/// the explicit scheme); the split lines must not cross the plate.
+fn far_field_state(
+    grid: &Grid,
+    params: &FlowParams,
+    metrics: &Metrics,
+) -> Result<(Zones, Option<Box<State>>), FlowError> {
+    match params.far_field {
+        FarFieldScheme::Explicit => Ok((Zones::none(grid), None)),
+        FarFieldScheme::Implicit => {
+            let z = Zones::new(grid, params.near_x, params.near_y);
+            z.check_plate(grid).map_err(FlowError::Setup)?;
+            let state = State::new(grid.nx, grid.ny, metrics);
+            Ok((z, Some(Box::new(state))))
+        }
     }
 }
 

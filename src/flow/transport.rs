@@ -61,7 +61,7 @@ impl LineOp {
     pub fn new(cv: &[f64], r: &Ratios, first: isize, last: isize) -> LineOp {
         let n = cv.len() as isize;
         let diff = |k: isize, plus: bool| -> Stencil {
-            let central = |f: isize| f <= first - 1 || f >= last;
+            let central = |f: isize| f < first || f >= last;
             let (hi, lo) = (
                 face(r, k, plus, central(k)),
                 face(r, k - 1, plus, central(k - 1)),
