@@ -97,25 +97,27 @@ fn time_steps(flow: &mut FlowSolver, case: &Case, steps: usize) -> anyhow::Resul
 
 /// A plain-text table of the rows.
 pub fn table(rows: &[BenchRow]) -> String {
-    let mut s = String::from(
-        "   N      grid     cells  factor nnz  setup s  threads   momentum  projection     total   (ns per cell per step)\n",
-    );
-    for r in rows {
-        s.push_str(&format!(
-            "{:4} {:4}x{:<4} {:8} {:11} {:8.2} {:8} {:10.1} {:11.1} {:9.1}\n",
-            r.resolution,
-            r.nx,
-            r.ny,
-            r.cells,
-            r.factor_nnz,
-            r.setup_seconds,
-            r.threads,
-            r.momentum_ns_per_cell,
-            r.pressure_ns_per_cell,
-            r.total_ns_per_cell
-        ));
+    let head = "   N      grid     cells  factor nnz  setup s  threads   momentum  projection     total   (ns per cell per step)\n";
+    head.to_string() + &rows.iter().map(|r| r.to_string()).collect::<String>()
+}
+
+impl std::fmt::Display for BenchRow {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let BenchRow {
+            resolution: n,
+            nx,
+            ny,
+            cells,
+            factor_nnz: nnz,
+            setup_seconds: setup,
+            threads,
+            momentum_ns_per_cell: mom,
+            pressure_ns_per_cell: proj,
+            total_ns_per_cell: total,
+            ..
+        } = self;
+        writeln!(f, "{n:4} {nx:4}x{ny:<4} {cells:8} {nnz:11} {setup:8.2} {threads:8} {mom:10.1} {proj:11.1} {total:9.1}")
     }
-    s
 }
 
 /// Time to solution of the card's free fall at one resolution.
@@ -233,24 +235,22 @@ fn turn_marks(sim: &mut Simulation, turns: usize) -> anyhow::Result<Vec<(u64, f6
 
 /// A plain-text table of the card rows.
 pub fn card_table(rows: &[CardRow]) -> String {
-    let mut s = String::from(
-        "   N    cells  far field  steps/turn  threads  ns/cell/step (all, 1)  s per turn (all, 1)   run steps   run s\n",
-    );
-    for r in rows {
-        s.push_str(&format!(
-            "{:4} {:8}  {:9} {:10.0} {:8} {:11.1} {:9.1} {:10.2} {:8.2} {:11} {:7.1}\n",
-            r.resolution,
-            r.cells,
-            format!("{:?}", r.far_field).to_lowercase(),
-            r.steps_per_turn,
-            r.threads,
-            r.ns_per_cell_step_all,
-            r.ns_per_cell_step_one,
-            r.seconds_per_turn_all,
-            r.seconds_per_turn_one,
-            r.steps,
-            r.wall_seconds
-        ));
+    let head = "   N    cells  far field  steps/turn  threads  ns/cell/step (all, 1)  s per turn (all, 1)   run steps   run s\n";
+    head.to_string() + &rows.iter().map(|r| r.to_string()).collect::<String>()
+}
+
+impl std::fmt::Display for CardRow {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let far = format!("{:?}", self.far_field).to_lowercase();
+        let (n, cells, spt, threads) = (
+            self.resolution,
+            self.cells,
+            self.steps_per_turn,
+            self.threads,
+        );
+        let (all, one) = (self.ns_per_cell_step_all, self.ns_per_cell_step_one);
+        let (turn_all, turn_one) = (self.seconds_per_turn_all, self.seconds_per_turn_one);
+        let (steps, wall) = (self.steps, self.wall_seconds);
+        writeln!(f, "{n:4} {cells:8}  {far:9} {spt:10.0} {threads:8} {all:11.1} {one:9.1} {turn_all:10.2} {turn_one:8.2} {steps:11} {wall:7.1}")
     }
-    s
 }
