@@ -39,6 +39,12 @@ pub enum Param {
     Inertia,
     Gravity,
     AbOrder,
+    /// Half-width of the near field along x (chords): beyond it the grid transport is implicit.
+    NearX,
+    /// Half-height of the near field along y (chords).
+    NearY,
+    /// Worker threads of a run.
+    Threads,
 }
 
 impl Param {
@@ -69,6 +75,9 @@ impl Param {
             Param::Inertia => "inertia ratio I*",
             Param::Gravity => "gravity g*",
             Param::AbOrder => "Adams–Bashforth order",
+            Param::NearX => "near-field half-width along x (chords)",
+            Param::NearY => "near-field half-height along y (chords)",
+            Param::Threads => "worker threads (0: one per core)",
         }
     }
 }

@@ -38,6 +38,16 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         (&["pinned", "--preset", "none"], "--mass"),
         (&["free", "--ab-order", "7"], "1..=6"),
         (
+            &["static", "--near-x", "0.2"],
+            "--near-x 0.2 is out of range: accepted [0.5, 1000]",
+        ),
+        (&["forced", "--near-y", "NaN"], "--near-y NaN"),
+        (
+            &["static", "--threads", "300"],
+            "--threads 300 is out of range: accepted 0..=256",
+        ),
+        (&["free", "--far-field", "sideways"], "sideways"),
+        (
             &["static", "--summary", "/nonexistent-dir/s.json"],
             "/nonexistent-dir",
         ),

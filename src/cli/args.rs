@@ -8,8 +8,9 @@ use super::record_args::RecordArgs;
 use super::Command;
 use crate::body::{AbStart, PlateProps};
 use crate::config::PhysicalPlate;
-use crate::flow::FlowParams;
+use crate::flow::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
 use crate::grid::{GridSpec, Stretch};
+use crate::param::{check_whole, Param};
 use crate::sim::{BodyConfig, Case, RunConfig, TimeControl};
 
 /// Options shared by every case.
@@ -54,6 +55,38 @@ pub struct SolverArgs {
     /// The seed's rotation rule Δt·|θ̇| ≤ CC.
     #[arg(long, default_value_t = 0.005, allow_negative_numbers = true)]
     pub cc: f64,
+    /// How the transport by the grid velocity is stepped outside the near field: `implicit`
+    /// (line solves; Δt follows the near field) or `explicit` (the scheme before issue 8, whose
+    /// Δt is bound by the far field's grid speed |θ̇| × extent).
+    #[arg(long, value_enum, default_value_t = FarFieldArg::Implicit)]
+    pub far_field: FarFieldArg,
+    /// Half-width of the near field along x (chords): columns farther out take the grid
+    /// transport along them implicitly (with --far-field implicit).
+    #[arg(long, default_value_t = NEAR_DEFAULT, allow_negative_numbers = true)]
+    pub near_x: f64,
+    /// Half-height of the near field along y (chords): rows farther out take the grid transport
+    /// along them implicitly.
+    #[arg(long, default_value_t = NEAR_DEFAULT, allow_negative_numbers = true)]
+    pub near_y: f64,
+    /// Worker threads for the run (0: one per core); the results do not depend on it.
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+}
+
+/// `--far-field`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum FarFieldArg {
+    Explicit,
+    Implicit,
+}
+
+impl From<FarFieldArg> for FarFieldScheme {
+    fn from(a: FarFieldArg) -> FarFieldScheme {
+        match a {
+            FarFieldArg::Explicit => FarFieldScheme::Explicit,
+            FarFieldArg::Implicit => FarFieldScheme::Implicit,
+        }
+    }
 }
 
 #[derive(Args, Debug)]
@@ -162,19 +195,6 @@ pub struct FreeArgs {
     pub record: RecordArgs,
 }
 
-#[derive(Args, Debug)]
-pub struct BenchArgs {
-    /// Cells per chord of the grids to time (each with the default extent and growth cap).
-    #[arg(long, value_delimiter = ',', default_values_t = vec![32, 64, 128, 384])]
-    pub resolutions: Vec<usize>,
-    /// Steps timed per grid (after 5 warm-up steps).
-    #[arg(long, default_value_t = 50)]
-    pub steps: usize,
-    /// Write the results as JSON to this file.
-    #[arg(long, value_name = "FILE")]
-    pub json: Option<PathBuf>,
-}
-
 impl SolverArgs {
     fn grid(&self) -> GridSpec {
         if self.seed_grid {
@@ -205,6 +225,9 @@ impl SolverArgs {
             flow: FlowParams {
                 re: self.re.unwrap_or(default_re),
                 cfl: self.cfl,
+                far_field: self.far_field.into(),
+                near_x: self.near_x,
+                near_y: self.near_y,
                 ..FlowParams::default()
             },
             body,
@@ -298,6 +321,9 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
         Command::Sweep(_) => return Err(ArgError::NotACase("sweep")),
     };
     cfg.validate()?;
+    if let Some((solver, _)) = cmd.case_args() {
+        check_whole(Param::Threads, solver.threads, 0, 256)?;
+    }
     Ok(cfg)
 }
 

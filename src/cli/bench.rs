@@ -1,31 +1,102 @@
-//! `platefall bench`: the flow step's cost per cell on several grids (see [`crate::bench`]).
-use super::args::BenchArgs;
+//! `platefall bench`: the flow step's cost per cell on several grids, or with `--card` the time to
+//! solution of the card's free fall (see [`crate::bench`]).
+use std::path::PathBuf;
+
+use clap::Args;
+
+use super::args::FarFieldArg;
 use super::run::write_atomically;
-use crate::bench::{bench_one, table};
+use crate::bench::{bench_card, bench_one, card_table, table};
 use crate::record::files::check_writable;
+
+#[derive(Args, Debug)]
+pub struct BenchArgs {
+    /// Cells per chord of the grids to time (each with the default extent and growth cap)
+    /// [default: 32,64,128,384; with --card 32,64,128].
+    #[arg(long, value_delimiter = ',')]
+    pub resolutions: Option<Vec<usize>>,
+    /// Steps timed per grid (after 5 warm-up steps); with --card, the steps timed on one core.
+    #[arg(long, default_value_t = 50)]
+    pub steps: usize,
+    /// Worker threads (0: one per core) [default: 1, or 0 with --card].
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// The far-field scheme to time.
+    #[arg(long, value_enum, default_value_t = FarFieldArg::Implicit)]
+    pub far_field: FarFieldArg,
+    /// Time to solution of a rotating plate: the card's free fall (`platefall free`) through
+    /// --turns turns after release; steps per turn over turns 2..=T, time per step and per turn
+    /// on all cores (--threads) and on one core (--steps more steps).
+    #[arg(long)]
+    pub card: bool,
+    /// Turns after release for --card (at least 2: the first is the spin-up).
+    #[arg(long, default_value_t = 2)]
+    pub turns: usize,
+    /// Write the results as JSON to this file.
+    #[arg(long, value_name = "FILE")]
+    pub json: Option<PathBuf>,
+}
 
 /// Runs the benchmark and prints its table (and writes --json).
 pub fn run_bench(args: &BenchArgs) -> anyhow::Result<()> {
     if args.steps == 0 {
         anyhow::bail!("--steps 0 is out of range: accepted 1..");
     }
+    if args.card && args.turns < 2 {
+        anyhow::bail!(
+            "--turns {} is out of range: accepted 2.. (with --card)",
+            args.turns
+        );
+    }
     if let Some(p) = &args.json {
         check_writable(p, false).map_err(|r| anyhow::anyhow!("--json {}: {r}", p.display()))?;
     }
-    let mut rows = Vec::new();
+    let json = if args.card {
+        serde_json::to_string_pretty(&card_rows(args)?)?
+    } else {
+        serde_json::to_string_pretty(&step_rows(args)?)?
+    };
+    if let Some(p) = &args.json {
+        write_atomically(p, json.as_bytes())?;
+    }
+    Ok(())
+}
+
+/// The step benchmark, one row per resolution, printed as it goes.
+fn step_rows(args: &BenchArgs) -> anyhow::Result<Vec<crate::bench::BenchRow>> {
+    let threads = args.threads.unwrap_or(1);
+    let resolutions = args.resolutions.clone().unwrap_or(vec![32, 64, 128, 384]);
     eprintln!(
-        "timing {} steps per grid, single-threaded, prescribed motion (α = 0.4 translation + θ̇ = 1)",
-        args.steps
+        "timing {} steps per grid, prescribed motion (α = 0.4 translation + θ̇ = 1), {:?} far field",
+        args.steps, args.far_field
     );
-    for &n in &args.resolutions {
-        rows.push(bench_one(n, args.steps)?);
+    let mut rows = Vec::new();
+    for &n in &resolutions {
+        rows.push(bench_one(n, args.steps, args.far_field.into(), threads)?);
         if let Some(line) = table(&rows).lines().last() {
             eprintln!("{line}");
         }
     }
     print!("{}", table(&rows));
-    if let Some(p) = &args.json {
-        write_atomically(p, serde_json::to_string_pretty(&rows)?.as_bytes())?;
+    Ok(rows)
+}
+
+/// The card benchmark, one row per resolution, printed as it goes.
+fn card_rows(args: &BenchArgs) -> anyhow::Result<Vec<crate::bench::CardRow>> {
+    let threads = args.threads.unwrap_or(0);
+    let resolutions = args.resolutions.clone().unwrap_or(vec![32, 64, 128]);
+    eprintln!(
+        "the card's free fall, {} turns after release, {:?} far field; then {} steps on one core",
+        args.turns, args.far_field, args.steps
+    );
+    let mut rows = Vec::new();
+    for &n in &resolutions {
+        let row = bench_card(n, args.turns, args.far_field.into(), threads, args.steps)?;
+        rows.push(row);
+        if let Some(line) = card_table(&rows).lines().last() {
+            eprintln!("{line}");
+        }
     }
-    Ok(())
+    print!("{}", card_table(&rows));
+    Ok(rows)
 }

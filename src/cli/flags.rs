@@ -27,6 +27,9 @@ pub fn flag(p: Param) -> &'static str {
         Param::Inertia => "--inertia",
         Param::Gravity => "--gravity",
         Param::AbOrder => "--ab-order",
+        Param::NearX => "--near-x",
+        Param::NearY => "--near-y",
+        Param::Threads => "--threads",
     }
 }
 

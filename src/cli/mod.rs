@@ -6,12 +6,14 @@ pub mod bench;
 pub mod flags;
 pub mod record_args;
 pub mod run;
+pub mod threads;
 
 use clap::{Parser, Subcommand};
 
 pub use args::{
-    run_config, BenchArgs, BodyArgs, ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs,
+    run_config, BodyArgs, FarFieldArg, ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs,
 };
+pub use bench::BenchArgs;
 pub use flags::ArgError;
 pub use record_args::RecordArgs;
 

@@ -28,6 +28,7 @@ struct Prepared {
     config: RunConfig,
     opts: RecordOptions,
     summary_path: Option<PathBuf>,
+    threads: usize,
 }
 
 /// Runs a case subcommand to its end; the exit code says how it ended.
@@ -37,8 +38,9 @@ pub fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     let stop = Arc::new(AtomicBool::new(false));
     install_ctrlc(stop.clone())?;
     let mut logger = record::spawn_logger(p.opts.clone(), run_info(&p.config, &sim))?;
+    let pool = super::threads::pool(p.threads)?;
 
-    let (rec, wall_seconds, lost) = solve(&mut sim, &mut logger, &stop);
+    let (rec, wall_seconds, lost) = solve(&mut sim, &mut logger, &stop, &pool);
 
     let summary = summarize(&p.config, &rec, wall_seconds);
     let text = report(&p.config, &summary);
@@ -98,6 +100,7 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
         config,
         opts,
         summary_path,
+        threads: solver_args.threads,
     })
 }
 
@@ -127,24 +130,22 @@ fn run_info(config: &RunConfig, sim: &Simulation) -> RunInfo {
     }
 }
 
-/// Runs the solver on its own thread (this one waits), timing it.
+/// Runs the solver inside the worker pool (this thread waits), timing it.
 fn solve(
     sim: &mut Simulation,
     logger: &mut Logger,
     stop: &AtomicBool,
+    pool: &rayon::ThreadPool,
 ) -> (RunRecord, f64, Option<anyhow::Error>) {
-    std::thread::scope(|scope| {
-        let handle = scope.spawn(|| {
-            let mut fwd = Forward {
-                logger,
-                stop,
-                lost: None,
-            };
-            let start = Instant::now();
-            let rec = sim.run(&mut fwd);
-            (rec, start.elapsed().as_secs_f64(), fwd.lost)
-        });
-        handle.join().expect("solver thread panicked")
+    pool.install(|| {
+        let mut fwd = Forward {
+            logger,
+            stop,
+            lost: None,
+        };
+        let start = Instant::now();
+        let rec = sim.run(&mut fwd);
+        (rec, start.elapsed().as_secs_f64(), fwd.lost)
     })
 }
 

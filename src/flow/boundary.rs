@@ -210,8 +210,18 @@ fn side_faces<'a>(
     })
 }
 
+/// How the convective outflow condition ∂u/∂t + c ∂u/∂n = 0 is stepped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outflow {
+    /// u_b − Δt c (u_b − u_in)/gap (today's; stable for a Courant number c Δt/gap ≤ 1).
+    Explicit,
+    /// (u_b + σ u_in)/(1 + σ), σ = c Δt/gap: implicit in its own Courant number, stable at any σ.
+    Implicit,
+}
+
 /// Sets the normal velocity on every outer boundary face for the new time level t (state after the
 /// step), given the grid motion at that time, and removes the net flux.
+#[allow(clippy::too_many_arguments)]
 pub fn set_outer_normals(
     u: &mut Padded,
     v: &mut Padded,
@@ -220,6 +230,7 @@ pub fn set_outer_normals(
     bc: &OuterBc,
     t: f64,
     dt: f64,
+    outflow: Outflow,
 ) {
     let nx = v.ni as isize;
     let ny = u.nj as isize;
@@ -238,10 +249,13 @@ pub fn set_outer_normals(
             OuterBc::FarField => {
                 let (wb, w_in) = (face.get(u, v), face.get_inner(u, v));
                 let c = face.sign * (wb - face.g); // outward relative speed
-                if c > 0.0 {
-                    wb - dt * c * (wb - w_in) / face.gap
-                } else {
-                    0.0
+                match (c > 0.0, outflow) {
+                    (false, _) => 0.0,
+                    (true, Outflow::Explicit) => wb - dt * c * (wb - w_in) / face.gap,
+                    (true, Outflow::Implicit) => {
+                        let sigma = dt * c / face.gap;
+                        (wb + sigma * w_in) / (1.0 + sigma)
+                    }
                 }
             }
         };

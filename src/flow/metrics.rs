@@ -68,6 +68,69 @@ pub struct Metrics {
     pub wx_left: Vec<f64>,
     /// Flux weight of the lower cell when u is averaged to the v-face at yₙ[j]: dy[j−1]/(dy[j−1]+dy[j]).
     pub wy_low: Vec<f64>,
+    /// Spacing ratios of the u points along x (nodes) and y (centres), v along x (centres) and
+    /// y (nodes), for the upwind-biased face values of the implicit zones.
+    pub u_xr: Ratios,
+    pub u_yr: Ratios,
+    pub v_xr: Ratios,
+    pub v_yr: Ratios,
+}
+
+/// Spacing ratios along a line of points p_k (ghosts included), for the face k between p_k and
+/// p_{k+1}: `plus[k]` = (p_{k+1} − p_k)/(p_k − p_{k−1}) (flow towards +, upstream gap below),
+/// `minus[k]` = (p_{k+1} − p_k)/(p_{k+2} − p_{k+1}), and `theta[k]` = (f_k − p_k)/(p_{k+1} − p_k)
+/// the face's fractional position (½ where faces are midpoints). Indexed k + GHOST; 1 (ratios)
+/// and ½ (theta) where undefined.
+#[derive(Clone, Debug, Default)]
+pub struct Ratios {
+    pub plus: Vec<f64>,
+    pub minus: Vec<f64>,
+    pub theta: Vec<f64>,
+}
+
+impl Ratios {
+    /// The ratios of points stored with GHOST ghosts before the first interior point; `faces[k]`
+    /// is the face after point k (stored alike), if any.
+    pub fn new(points: &[f64], faces: &[f64]) -> Ratios {
+        let n = points.len();
+        let gap = |k: usize| points[k + 1] - points[k];
+        let plus = (0..n)
+            .map(|k| {
+                if k >= 1 && k + 1 < n {
+                    gap(k) / gap(k - 1)
+                } else {
+                    1.0
+                }
+            })
+            .collect();
+        let minus = (0..n)
+            .map(|k| if k + 2 < n { gap(k) / gap(k + 1) } else { 1.0 })
+            .collect();
+        let theta = (0..n)
+            .map(|k| match faces.get(k) {
+                Some(f) if k + 1 < n => (f - points[k]) / gap(k),
+                _ => 0.5,
+            })
+            .collect();
+        Ratios { plus, minus, theta }
+    }
+
+    /// The fractional position of face k (interior numbering) from point k.
+    #[inline(always)]
+    pub fn theta(&self, k: isize) -> f64 {
+        self.theta[(k + GHOST as isize) as usize]
+    }
+
+    /// Ratio for the face k (interior numbering) with flow towards + or −.
+    #[inline(always)]
+    pub fn get(&self, k: isize, plus: bool) -> f64 {
+        let idx = (k + GHOST as isize) as usize;
+        if plus {
+            self.plus[idx]
+        } else {
+            self.minus[idx]
+        }
+    }
 }
 
 impl Metrics {
@@ -98,6 +161,10 @@ impl Metrics {
             v_y: faces(&y, grid.ny),
             wx_left: low_weight(&x, grid.nx),
             wy_low: low_weight(&y, grid.ny),
+            u_xr: Ratios::new(&x.nodes, &x.centres),
+            u_yr: Ratios::new(&y.centres, &y.nodes[1..]),
+            v_xr: Ratios::new(&x.centres, &x.nodes[1..]),
+            v_yr: Ratios::new(&y.nodes, &y.centres),
             x,
             y,
         }

@@ -11,24 +11,51 @@
 //!    u* = g on the plate and the outer boundary values at tⁿ⁺¹, and projects. On return uⁿ⁺¹ is
 //!    discretely divergence-free in every fluid cell, pⁿ⁺¹ is set and the loads are computed.
 //!
-//! The hot path allocates nothing after [`FlowSolver::new`].
+//! With [`FarFieldScheme::Implicit`] (the default) the grid-velocity transport outside a near
+//! field around the plate is taken implicitly instead (`zones.rs`, `implicit.rs`): phase 2 then
+//! solves tridiagonal systems along the split rows and columns before the projection, and the
+//! pressure is incremental. Inside the near field the scheme is the one above.
+//!
+//! The hot path allocates nothing after [`FlowSolver::new`]. The u and v halves of each phase run
+//! in parallel (`rayon::join`); called from inside a rayon pool that allocates nothing either.
+mod advance_implicit;
 pub mod array;
+pub mod band;
 pub mod boundary;
 pub mod frame;
+pub mod implicit;
 pub mod metrics;
 pub mod momentum;
 pub mod plate;
 pub mod pressure;
+pub mod transport;
+pub mod zones;
 
 pub use boundary::{OuterBc, VelocityFn};
 pub use frame::Frame;
 pub use plate::BodyAxesLoads;
 
 use array::Padded;
+use boundary::Outflow;
+use implicit::State;
 use metrics::{Component, Metrics};
+use momentum::RhsContext;
 use pressure::Pressure;
+use zones::Zones;
 
 use crate::grid::Grid;
+use crate::param::{check_range, InputError, Param};
+
+/// How the transport by the grid velocity is stepped away from the plate (SPEC §3).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FarFieldScheme {
+    /// Explicit everywhere (the scheme before issue 8): Δt is bound by |θ̇| × the extent.
+    Explicit,
+    /// Implicit along the lines outside the near field: Δt follows the near field.
+    #[default]
+    Implicit,
+}
 
 /// Numerical parameters of the flow solver.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -39,6 +66,22 @@ pub struct FlowParams {
     pub cfl: f64,
     /// Fraction of the explicit viscous stability limit used.
     pub visc_safety: f64,
+    /// How the grid transport is stepped outside the near field.
+    #[serde(default)]
+    pub far_field: FarFieldScheme,
+    /// Half-widths of the near field (chords): columns with |x| > `near_x` and rows with
+    /// |y| > `near_y` take the grid transport along them implicitly.
+    #[serde(default = "default_near")]
+    pub near_x: f64,
+    #[serde(default = "default_near")]
+    pub near_y: f64,
+}
+
+/// The near field's default half-width (chords); see the README, "Performance".
+pub const NEAR_DEFAULT: f64 = 1.0;
+
+fn default_near() -> f64 {
+    NEAR_DEFAULT
 }
 
 impl Default for FlowParams {
@@ -47,6 +90,28 @@ impl Default for FlowParams {
             re: 5000.0,
             cfl: 0.5,
             visc_safety: 0.8,
+            far_field: FarFieldScheme::Implicit,
+            near_x: NEAR_DEFAULT,
+            near_y: NEAR_DEFAULT,
+        }
+    }
+}
+
+impl FlowParams {
+    /// Checks every value, naming the first bad one and its accepted range.
+    pub fn validate(&self) -> Result<(), InputError> {
+        check_range(Param::Reynolds, self.re, 0.0, 1e5, true)?;
+        check_range(Param::Cfl, self.cfl, 0.0, 1.0, true)?;
+        check_range(Param::NearX, self.near_x, 0.5, 1000.0, false)?;
+        check_range(Param::NearY, self.near_y, 0.5, 1000.0, false)
+    }
+
+    /// Today's explicit scheme everywhere (the byte-identical baseline).
+    pub fn explicit(re: f64) -> FlowParams {
+        FlowParams {
+            re,
+            far_field: FarFieldScheme::Explicit,
+            ..FlowParams::default()
         }
     }
 }
@@ -63,8 +128,8 @@ pub enum FlowError {
     /// The solution blew up at time `t` (after `step` steps); `reason` says what was seen.
     #[error("the flow solution diverged at t = {t:.4} (step {step}): {reason}")]
     Diverged { t: f64, step: u64, reason: String },
-    /// The pressure operator could not be built.
-    #[error("the pressure operator could not be built: {0}")]
+    /// The solver could not be set up (the pressure operator, or the implicit zones).
+    #[error("the flow solver could not be set up: {0}")]
     Setup(String),
 }
 
@@ -84,6 +149,9 @@ pub struct FlowSolver {
     outer: OuterBc,
     forcing: Option<ForceFn>,
     wall: plate::WallFaces,
+    /// The lines with implicit grid transport (none in the explicit scheme) and their workspaces.
+    zones: Zones,
+    implicit: Option<Box<State>>,
     /// Motion of the plate at the current time level.
     pub frame: Frame,
     /// Current time and the last step taken (0 before the first step).
@@ -114,6 +182,7 @@ impl FlowSolver {
         let dt_visc =
             params.visc_safety / (4.0 * nu * (1.0 / (min_dx * min_dx) + 1.0 / (min_dy * min_dy)));
         let (nx, ny) = (grid.nx, grid.ny);
+        let (zones, implicit) = far_field_state(&grid, &params, &metrics)?;
         let mut s = FlowSolver {
             u: Padded::zeros(nx + 1, ny),
             v: Padded::zeros(nx, ny + 1),
@@ -126,6 +195,8 @@ impl FlowSolver {
             outer,
             forcing: None,
             wall,
+            zones,
+            implicit,
             frame,
             t: 0.0,
             dt_prev: 0.0,
@@ -172,16 +243,13 @@ impl FlowSolver {
             &self.outer,
             self.t,
         );
-        let nu = 1.0 / self.params.re;
-        let stats = momentum::explicit_rhs(
-            &self.u,
-            &self.v,
-            &self.metrics,
-            &self.frame,
-            nu,
-            &mut self.hu,
-            &mut self.hv,
-        );
+        let context = RhsContext {
+            m: &self.metrics,
+            frame: &self.frame,
+            nu: 1.0 / self.params.re,
+            zones: &self.zones,
+        };
+        let stats = momentum::explicit_rhs(&self.u, &self.v, context, &mut self.hu, &mut self.hv);
         self.convective_rate = stats.convective_rate;
         self.wall.apply(
             &self.u,
@@ -222,27 +290,24 @@ impl FlowSolver {
             "FlowSolver::advance needs a positive finite dt, got {dt}"
         );
         self.prepared = false;
-        self.predict(dt);
         let t_next = self.t + dt;
-        self.frame = next;
-        self.impose_plate();
-        boundary::set_outer_normals(
-            &mut self.u,
-            &mut self.v,
-            &self.metrics,
-            &self.frame,
-            &self.outer,
-            t_next,
-            dt,
-        );
-        self.pressure.project(
-            &mut self.u,
-            &mut self.v,
-            &self.grid,
-            &self.metrics,
-            dt,
-            &mut self.p,
-        );
+        if self.implicit.is_some() {
+            self.predict_implicit(dt, next);
+            self.project_incremental(dt);
+        } else {
+            self.predict(dt);
+            self.frame = next;
+            self.impose_plate();
+            self.set_outer_normals(t_next, dt, Outflow::Explicit);
+            self.pressure.project(
+                &mut self.u,
+                &mut self.v,
+                &self.grid,
+                &self.metrics,
+                dt,
+                &mut self.p,
+            );
+        }
         self.t = t_next;
         self.dt_prev = dt;
         self.steps += 1;
@@ -273,6 +338,20 @@ impl FlowSolver {
         std::mem::swap(&mut self.hv, &mut self.hv_old);
     }
 
+    /// The outer boundary's normal velocities at `t` for the current frame, net flux removed.
+    pub(super) fn set_outer_normals(&mut self, t: f64, dt: f64, outflow: Outflow) {
+        boundary::set_outer_normals(
+            &mut self.u,
+            &mut self.v,
+            &self.metrics,
+            &self.frame,
+            &self.outer,
+            t,
+            dt,
+            outflow,
+        );
+    }
+
     /// The loads on the plate after a projection; an error if they are not finite.
     fn update_loads(&mut self) -> Result<(), FlowError> {
         self.loads = plate::loads(
@@ -292,7 +371,7 @@ impl FlowSolver {
     }
 
     /// No-slip: the faces on and inside the plate take the grid-point velocity g of this frame.
-    fn impose_plate(&mut self) {
+    pub(super) fn impose_plate(&mut self) {
         plate::set_plate_faces(
             &mut self.u,
             &mut self.v,
@@ -348,6 +427,24 @@ impl FlowSolver {
     /// Interior u on vertical faces ((nx+1) × ny) and v on horizontal faces (nx × (ny+1)).
     pub fn velocity_arrays(&self) -> (Vec<f64>, Vec<f64>) {
         (self.u.interior(), self.v.interior())
+    }
+}
+
+/// The split lines and the implicit workspaces for the far-field scheme of `params` (none for
+/// the explicit scheme); the split lines must not cross the plate.
+fn far_field_state(
+    grid: &Grid,
+    params: &FlowParams,
+    metrics: &Metrics,
+) -> Result<(Zones, Option<Box<State>>), FlowError> {
+    match params.far_field {
+        FarFieldScheme::Explicit => Ok((Zones::none(grid), None)),
+        FarFieldScheme::Implicit => {
+            let z = Zones::new(grid, params.near_x, params.near_y);
+            z.check_plate(grid).map_err(FlowError::Setup)?;
+            let state = State::new(grid.nx, grid.ny, metrics);
+            Ok((z, Some(Box::new(state))))
+        }
     }
 }
 

@@ -44,6 +44,15 @@ pub struct Pressure {
 #[derive(Debug)]
 pub struct PressureError(pub String);
 
+/// How a projection sets the pressure from its potential φ.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PressureUpdate {
+    /// p = φ/Δt.
+    Replace,
+    /// p += φ/Δt (incremental pressure).
+    Increment,
+}
+
 impl Pressure {
     /// Assembles and factors −∇² with the Neumann conditions described above.
     pub fn new(grid: &Grid, m: &Metrics) -> Result<Self, PressureError> {
@@ -89,8 +98,9 @@ impl Pressure {
             + (v.get(ii, jj + 1) - v.get(ii, jj)) * grid.dx[i]
     }
 
-    /// Projects (u, v) onto the discretely divergence-free space, in place; returns p = φ/Δt in `p`.
+    /// Projects (u, v) onto the discretely divergence-free space, in place, and sets p = φ/Δt.
     /// Only faces between two fluid cells change.
+    #[allow(clippy::too_many_arguments)]
     pub fn project(
         &mut self,
         u: &mut Padded,
@@ -100,9 +110,28 @@ impl Pressure {
         dt: f64,
         p: &mut [f64],
     ) {
+        self.project_velocity(u, v, grid, m);
+        self.set_pressure(dt, p, PressureUpdate::Replace);
+    }
+
+    /// Projects (u, v) in place and keeps the potential φ in [`Pressure::phi`] (where the caller
+    /// may transform it before [`Pressure::set_pressure`]).
+    pub fn project_velocity(&mut self, u: &mut Padded, v: &mut Padded, grid: &Grid, m: &Metrics) {
         self.solve_phi(u, v, grid);
         self.correct_velocity(u, v, m);
-        self.pressure_from_phi(dt, p);
+    }
+
+    /// Sets p from the potential of the last projection: p = φ/Δt or p += φ/Δt.
+    pub fn set_pressure(&self, dt: f64, p: &mut [f64], update: PressureUpdate) {
+        self.pressure_from_phi(dt, p, update);
+    }
+
+    /// The potential of the gradient part of a field f given on the faces (zero on the outer and
+    /// plate faces): p with ∇·(f − ∇p) = 0 in every fluid cell, p → 0 on the outer ring. Starts
+    /// the incremental pressure of the implicit far field.
+    pub fn potential(&mut self, fu: &Padded, fv: &Padded, grid: &Grid, p: &mut [f64]) {
+        self.solve_phi(fu, fv, grid);
+        self.pressure_from_phi(1.0, p, PressureUpdate::Replace);
     }
 
     /// Solves (−L) φ = −div u* and scatters φ onto the cells (0 on plate and pinned cells).
@@ -153,9 +182,9 @@ impl Pressure {
         }
     }
 
-    /// p = φ/Δt, shifted so that its mean over the outermost ring of cells is zero (p → 0 far
-    /// away); zero inside the plate.
-    fn pressure_from_phi(&self, dt: f64, p: &mut [f64]) {
+    /// p = φ/Δt (or p += φ/Δt), φ shifted so that its mean over the outermost ring of cells is
+    /// zero (p → 0 far away); zero inside the plate.
+    fn pressure_from_phi(&self, dt: f64, p: &mut [f64], update: PressureUpdate) {
         let (nx, ny) = (self.nx, self.ny);
         let (phi, fluid) = (&self.phi, &self.fluid);
         let inv_dt = 1.0 / dt;
@@ -171,10 +200,10 @@ impl Pressure {
         }
         let shift = ring / count as f64;
         for (k, pk) in p.iter_mut().enumerate() {
-            *pk = if fluid[k] {
-                (phi[k] - shift) * inv_dt
-            } else {
-                0.0
+            *pk = match (fluid[k], update) {
+                (false, _) => 0.0,
+                (true, PressureUpdate::Replace) => (phi[k] - shift) * inv_dt,
+                (true, PressureUpdate::Increment) => *pk + (phi[k] - shift) * inv_dt,
             };
         }
     }

@@ -75,8 +75,7 @@ impl RunConfig {
     /// Validates every value; the first bad one is reported.
     pub fn validate(&self) -> Result<(), InputError> {
         self.grid.validate()?;
-        check_range(Param::Reynolds, self.flow.re, 0.0, 1e5, true)?;
-        check_range(Param::Cfl, self.flow.cfl, 0.0, 1.0, true)?;
+        self.flow.validate()?;
         let t = &self.time;
         check_range(Param::TEnd, t.t_end, 0.0, 1e5, true)?;
         check_range(Param::DtMax, t.dt_max, 0.0, 1.0, true)?;
