@@ -38,7 +38,23 @@ pub enum Param {
     Mass,
     Inertia,
     Gravity,
+    /// Displaced fluid mass m_f* (buoyancy).
+    DisplacedMass,
+    /// Applied moment on the plate.
+    Torque,
     AbOrder,
+    /// Physical plate width (chord).
+    Chord,
+    /// Physical plate thickness.
+    PlateThickness,
+    /// Plate density ρs.
+    PlateDensity,
+    /// Fluid density ρf.
+    FluidDensity,
+    /// Fluid kinematic viscosity ν.
+    Viscosity,
+    /// Acceleration of gravity g.
+    GravityAccel,
 }
 
 impl Param {
@@ -68,7 +84,15 @@ impl Param {
             Param::Mass => "mass ratio m*",
             Param::Inertia => "inertia ratio I*",
             Param::Gravity => "gravity g*",
+            Param::DisplacedMass => "displaced fluid mass m_f*",
+            Param::Torque => "applied moment (by ρU²c²)",
             Param::AbOrder => "Adams–Bashforth order",
+            Param::Chord => "plate width (chord, mm)",
+            Param::PlateThickness => "plate thickness (mm)",
+            Param::PlateDensity => "plate density (kg/m³)",
+            Param::FluidDensity => "fluid density (kg/m³)",
+            Param::Viscosity => "fluid kinematic viscosity (mm²/s)",
+            Param::GravityAccel => "gravity (m/s²)",
         }
     }
 }

@@ -34,7 +34,8 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         (&["static", "--alpha", "4"], "[-3.14"),
         (&["static", "--t-end", "-1"], "--t-end"),
         (&["forced", "--rate", "0"], "--rate"),
-        (&["free", "--mass", "0.5"], "0.5"),
+        (&["free", "--mass", "0"], "(0, 1000000]"),
+        (&["free", "--inertia", "-0.1"], "--inertia"),
         (&["pinned", "--preset", "none"], "--mass"),
         (&["free", "--ab-order", "7"], "1..=6"),
         (

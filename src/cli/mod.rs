@@ -4,13 +4,15 @@
 pub mod args;
 pub mod bench;
 pub mod flags;
+pub mod plate_args;
 pub mod record_args;
 pub mod run;
 
 use clap::{Parser, Subcommand};
 
 pub use args::{
-    run_config, BenchArgs, BodyArgs, ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs,
+    plate_notes, run_config, BenchArgs, BodyArgs, ForcedArgs, FreeArgs, PinnedArgs, SolverArgs,
+    StaticArgs,
 };
 pub use flags::ArgError;
 pub use record_args::RecordArgs;

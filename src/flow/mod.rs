@@ -12,6 +12,7 @@
 //!    discretely divergence-free in every fluid cell, pⁿ⁺¹ is set and the loads are computed.
 //!
 //! The hot path allocates nothing after [`FlowSolver::new`].
+pub mod added_mass;
 pub mod array;
 pub mod boundary;
 pub mod frame;
@@ -20,6 +21,7 @@ pub mod momentum;
 pub mod plate;
 pub mod pressure;
 
+pub use added_mass::AddedMass;
 pub use boundary::{OuterBc, VelocityFn};
 pub use frame::Frame;
 pub use plate::BodyAxesLoads;
@@ -86,6 +88,9 @@ pub struct FlowSolver {
     wall: plate::WallFaces,
     /// Motion of the plate at the current time level.
     pub frame: Frame,
+    /// Motion of the plate at the previous time level (`frame` before the first step); with
+    /// `dt_prev` it gives the change of motion the last projection answered ([`AddedMass`]).
+    pub frame_prev: Frame,
     /// Current time and the last step taken (0 before the first step).
     pub t: f64,
     pub dt_prev: f64,
@@ -127,6 +132,7 @@ impl FlowSolver {
             forcing: None,
             wall,
             frame,
+            frame_prev: frame,
             t: 0.0,
             dt_prev: 0.0,
             steps: 0,
@@ -224,6 +230,7 @@ impl FlowSolver {
         self.prepared = false;
         self.predict(dt);
         let t_next = self.t + dt;
+        self.frame_prev = self.frame;
         self.frame = next;
         self.impose_plate();
         boundary::set_outer_normals(
