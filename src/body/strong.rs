@@ -18,6 +18,12 @@
 //! moment. A pinned plate (translation prescribed at constant velocity, A = 0) solves the moment
 //! row for θ̈ alone. diag(m*, m*, I*) − K is the plate's mass plus the discrete added mass: positive
 //! definite for every m* > 0, I* > 0.
+//!
+//! The wall shear's instantaneous answer S (per unit change of velocity, [`AddedMass::shear`]) is a
+//! damping force; it is taken at the velocity the coming step reaches, F_S + S·Δt·(A, θ̈), which
+//! moves −Δt·S to the left-hand side: (diag(m*, m*, I*) − K − Δt S)(A, θ̈) = …. That is an O(Δt)
+//! change of when the shear acts, and it keeps very light plates at low Re stable at the flow's
+//! time step (explicitly the step would need Δt·|S| < m* + m_added).
 use super::rigid::{body_to_inertial, inertial_to_body, BodyState, Dof, PlateProps};
 use crate::flow::AddedMass;
 
@@ -32,64 +38,58 @@ pub enum Coupling {
     Strong,
 }
 
-/// The body's equations with the added mass implicit: K and the inverse of diag(m*, m*, I*) − K.
+/// The body's equations with the added mass implicit (and the shear's answer, see the module docs).
 #[derive(Clone, Debug)]
 pub struct StrongCoupling {
-    /// The flow's response matrix K.
+    /// The flow's response matrices K and S.
     pub added: AddedMass,
-    /// (diag(m*, m*, I*) − K)⁻¹, row-major.
-    inverse: [[f64; 3]; 3],
-    /// I* − K₂₂ (pinned plates).
-    pitch_inertia: f64,
+    /// diag(m*, m*, I*) − K, row-major.
+    mass: [[f64; 3]; 3],
 }
 
 impl StrongCoupling {
     /// The coupling for a plate with these properties; `None` when diag(m*, m*, I*) − K is singular
     /// (not for physical input: m*, I* > 0 and K negative semi-definite).
     pub fn new(props: &PlateProps, added: AddedMass) -> Option<Self> {
-        let k = &added.k;
-        let mut a = [[0.0; 3]; 3];
         let diag = [props.mass, props.mass, props.inertia];
-        for (r, row) in a.iter_mut().enumerate() {
-            for (c, x) in row.iter_mut().enumerate() {
-                *x = if r == c { diag[r] } else { 0.0 } - k[r][c];
-            }
-        }
-        Some(Self {
-            added,
-            inverse: inverse3(&a)?,
-            pitch_inertia: props.inertia - k[2][2],
-        })
+        let mass = [0, 1, 2]
+            .map(|r| [0, 1, 2].map(|c| if r == c { diag[r] } else { 0.0 } - added.k[r][c]));
+        inverse3(&mass)?;
+        Some(Self { added, mass })
     }
 
     /// Time derivative of (X, Y, θ, Ẋ, Ẏ, θ̇) for the equations of the module docs, given the
-    /// loads without their instantaneous part, `rest` = (F_x, F_y, M) in body axes.
+    /// loads without their instantaneous part, `rest` = (F_x, F_y, M) in body axes, for the step
+    /// `dt` about to be taken.
     pub fn derivative(
         &self,
         props: &PlateProps,
         dof: Dof,
         s: &BodyState,
         rest: [f64; 3],
+        dt: f64,
     ) -> [f64; 6] {
         let q = s.frame();
         let turn = self.added.apply([s.omega * q.v0, -s.omega * q.u0, 0.0]);
         let (wx, wy) = inertial_to_body(s.theta, 0.0, -props.weight());
+        let rhs = [
+            rest[0] + turn[0] + wx,
+            rest[1] + turn[1] + wy,
+            rest[2] + turn[2] + props.torque,
+        ];
+        let lhs =
+            [0, 1, 2].map(|r| [0, 1, 2].map(|c| self.mass[r][c] - dt * self.added.shear[r][c]));
         let (ax, ay, alpha) = match dof {
             Dof::Prescribed => (0.0, 0.0, 0.0),
-            Dof::PitchOnly => {
-                let alpha = (rest[2] + turn[2] + props.torque) / self.pitch_inertia;
-                (0.0, 0.0, alpha)
-            }
-            Dof::Free => {
-                let rhs = [
-                    rest[0] + turn[0] + wx,
-                    rest[1] + turn[1] + wy,
-                    rest[2] + turn[2] + props.torque,
-                ];
-                let x = [0, 1, 2].map(|r| (0..3).map(|c| self.inverse[r][c] * rhs[c]).sum());
-                let (ax, ay) = body_to_inertial(s.theta, x[0], x[1]);
-                (ax, ay, x[2])
-            }
+            Dof::PitchOnly => (0.0, 0.0, rhs[2] / lhs[2][2]),
+            Dof::Free => match inverse3(&lhs) {
+                Some(inv) => {
+                    let x = [0, 1, 2].map(|r| (0..3).map(|c| inv[r][c] * rhs[c]).sum());
+                    let (ax, ay) = body_to_inertial(s.theta, x[0], x[1]);
+                    (ax, ay, x[2])
+                }
+                None => (f64::NAN, f64::NAN, f64::NAN),
+            },
         };
         [s.xdot, s.ydot, s.omega, ax, ay, alpha]
     }
@@ -142,9 +142,10 @@ mod tests {
                 [0.0, -pi / 4.0, 0.0],
                 [0.0, 0.0, -pi / 128.0],
             ],
+            shear: [[-0.2, 0.0, 0.0], [0.0, -0.02, 0.0], [0.0, 0.0, -0.003]],
         };
         let sc = StrongCoupling::new(&props, added).unwrap();
-        let f = sc.derivative(&props, Dof::Free, &BodyState::default(), [0.0; 3]);
+        let f = sc.derivative(&props, Dof::Free, &BodyState::default(), [0.0; 3], 0.0);
         let want = -(0.1 - 0.05) * 20.0 / (0.1 + pi / 4.0);
         assert!(
             (f[4] - want).abs() < 1e-14 && f[3] == 0.0 && f[5] == 0.0,
@@ -155,7 +156,10 @@ mod tests {
             torque: 0.3,
             ..props
         };
-        let f = sc.derivative(&spun, Dof::PitchOnly, &BodyState::default(), [0.0; 3]);
+        let f = sc.derivative(&spun, Dof::PitchOnly, &BodyState::default(), [0.0; 3], 0.0);
         assert!((f[5] - 0.3 / (0.01 + pi / 128.0)).abs() < 1e-14, "{f:?}");
+        // With a step, the shear's answer adds Δt·|S| to the pitch inertia.
+        let f = sc.derivative(&spun, Dof::PitchOnly, &BodyState::default(), [0.0; 3], 0.01);
+        assert!((f[5] - 0.3 / (0.01 + pi / 128.0 + 0.01 * 0.003)).abs() < 1e-14);
     }
 }

@@ -10,16 +10,24 @@
 //! F_x, F_y, M in body axes; columns u0, v0, θ̇): the negative of the discrete plate's added-mass
 //! tensor (potential flow: π/4 normal, ≈ 0 along a thin plate, π/128 in pitch). It is computed once
 //! with the factored pressure matrix (three projections).
+//!
+//! The viscous shear on the plate, μ(u − g)/d from the first fluid velocity, also answers a change
+//! of motion at once: through g(qⁿ⁺¹) and through the projection's near-wall velocity −∇φ. Per unit
+//! change of velocity (not divided by Δt) that answer is the matrix S, of order 4μ/h along the
+//! plate. It is a damping force, which an explicit body step integrates stably only while
+//! Δt·|S|/(m + m_added) < 1 — violated by very light plates at low Re.
 use super::array::Padded;
 use super::frame::Frame;
 use super::plate::{self, BodyAxesLoads};
 use super::FlowSolver;
 
-/// K of the module docs: `k[row][col]`, rows (F_x, F_y, M) in body axes on ρU²c and ρU²c²,
-/// columns the unit changes of (u0, v0, θ̇) over a unit step.
+/// K and S of the module docs: `k[row][col]`, rows (F_x, F_y, M) in body axes on ρU²c and ρU²c²,
+/// columns the unit changes of (u0, v0, θ̇) over a unit step; `shear[row][col]` likewise per unit
+/// change of (u0, v0, θ̇), at the run's Reynolds number.
 #[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct AddedMass {
     pub k: [[f64; 3]; 3],
+    pub shear: [[f64; 3]; 3],
 }
 
 /// The three unit motions (u0, v0, θ̇) whose responses are the columns of K.
@@ -74,23 +82,30 @@ impl AddedMass {
 }
 
 impl FlowSolver {
-    /// K of the module docs, from three projections of the unit plate motions with the factored
-    /// pressure matrix (set-up cost only; allocates its own scratch fields and leaves the flow
-    /// untouched).
+    /// K and S of the module docs, from three projections of the unit plate motions with the
+    /// factored pressure matrix (set-up cost only; allocates its own scratch fields and leaves the
+    /// flow untouched).
     pub fn added_mass(&mut self) -> AddedMass {
-        let mut k = [[0.0; 3]; 3];
+        let (mut k, mut shear) = ([[0.0; 3]; 3], [[0.0; 3]; 3]);
+        let re = self.params.re;
         for (col, unit) in UNIT_MOTIONS.iter().enumerate() {
-            let l = self.unit_response(unit, f64::INFINITY);
-            for (row, value) in [l.fx, l.fy, l.moment].into_iter().enumerate() {
-                k[row][col] = value;
+            let (pressure, all) = self.unit_response(unit, re);
+            let rows = [
+                (pressure.fx, all.fx),
+                (pressure.fy, all.fy),
+                (pressure.moment, all.moment),
+            ];
+            for (row, (p, a)) in rows.into_iter().enumerate() {
+                k[row][col] = p;
+                shear[row][col] = a - p;
             }
         }
-        AddedMass { k }
+        AddedMass { k, shear }
     }
 
     /// The loads of one unit change of motion over a unit step, from fluid at rest: plate faces at
-    /// g(unit), projected, p = φ. With `re` = ∞ only the pressure is summed.
-    fn unit_response(&mut self, unit: &Frame, re: f64) -> BodyAxesLoads {
+    /// g(unit), projected, p = φ. Returns (pressure alone, pressure and shear at `re`).
+    fn unit_response(&mut self, unit: &Frame, re: f64) -> (BodyAxesLoads, BodyAxesLoads) {
         let (nx, ny) = (self.grid.nx, self.grid.ny);
         let mut u = Padded::zeros(nx + 1, ny);
         let mut v = Padded::zeros(nx, ny + 1);
@@ -98,26 +113,10 @@ impl FlowSolver {
         plate::set_plate_faces(&mut u, &mut v, &self.grid, &self.metrics, unit);
         self.pressure
             .project(&mut u, &mut v, &self.grid, &self.metrics, 1.0, &mut p);
-        plate::loads(&u, &v, &p, &self.grid, &self.metrics, unit, re)
-    }
-
-    /// The viscous part of the same responses at the run's Reynolds number (the shear of the
-    /// projected near-wall velocity against g), `s[row][col]`; for diagnostics.
-    pub fn unit_shear(&mut self) -> [[f64; 3]; 3] {
-        let mut s = [[0.0; 3]; 3];
-        let re = self.params.re;
-        for (col, unit) in UNIT_MOTIONS.iter().enumerate() {
-            let all = self.unit_response(unit, re);
-            let p_only = self.unit_response(unit, f64::INFINITY);
-            let d = [
-                all.fx - p_only.fx,
-                all.fy - p_only.fy,
-                all.moment - p_only.moment,
-            ];
-            for (row, value) in d.into_iter().enumerate() {
-                s[row][col] = value;
-            }
-        }
-        s
+        let (g, m) = (&self.grid, &self.metrics);
+        (
+            plate::loads(&u, &v, &p, g, m, unit, f64::INFINITY),
+            plate::loads(&u, &v, &p, g, m, unit, re),
+        )
     }
 }

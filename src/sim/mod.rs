@@ -239,7 +239,7 @@ impl Simulation {
                 let rest = sc
                     .added
                     .rest(&l, &flow.frame, &flow.frame_prev, flow.dt_prev);
-                let f = sc.derivative(&body.props, *dof, &body.state, rest);
+                let f = sc.derivative(&body.props, *dof, &body.state, rest, dt);
                 body.step_with(t, f, dt);
             }
             None => {
