@@ -38,6 +38,118 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         (&["free", "--inertia", "-0.1"], "--inertia"),
         (&["pinned", "--preset", "none"], "--mass"),
         (&["free", "--ab-order", "7"], "1..=6"),
+        (&["free", "--displaced-mass", "-1"], "[0, 1000000]"),
+        (&["pinned", "--torque", "1e9"], "[-1000, 1000]"),
+        (&["pinned", "--v0", "-1"], "[0, 10]"),
+        (&["free", "--coupling", "implicit"], "implicit"),
+        (&["free", "--chord-mm", "10"], "the following required"),
+        (&["free", "--fluid", "air"], "the following required"),
+        (
+            &[
+                "free",
+                "--chord-mm",
+                "0",
+                "--thickness-mm",
+                "1",
+                "--plate-density",
+                "2700",
+            ],
+            "(0, 10000]",
+        ),
+        (
+            &[
+                "free",
+                "--chord-mm",
+                "10",
+                "--thickness-mm",
+                "6",
+                "--plate-density",
+                "2700",
+            ],
+            "(0, 5]",
+        ),
+        (
+            &[
+                "free",
+                "--chord-mm",
+                "10",
+                "--thickness-mm",
+                "1",
+                "--plate-density",
+                "-1",
+            ],
+            "(0, 100000]",
+        ),
+        (
+            &[
+                "free",
+                "--chord-mm",
+                "10",
+                "--thickness-mm",
+                "1",
+                "--plate-density",
+                "2700",
+                "--fluid-density",
+                "0",
+            ],
+            "--fluid-density",
+        ),
+        (
+            &[
+                "free",
+                "--chord-mm",
+                "10",
+                "--thickness-mm",
+                "1",
+                "--plate-density",
+                "2700",
+                "--viscosity",
+                "0",
+            ],
+            "(0, 1000000]",
+        ),
+        (
+            &[
+                "free",
+                "--chord-mm",
+                "10",
+                "--thickness-mm",
+                "1",
+                "--plate-density",
+                "2700",
+                "--g",
+                "-9.81",
+            ],
+            "(0, 1000]",
+        ),
+        (
+            &[
+                "free",
+                "--chord-mm",
+                "1000",
+                "--thickness-mm",
+                "10",
+                "--plate-density",
+                "2700",
+                "--fluid",
+                "air",
+            ],
+            "Reynolds number",
+        ),
+        (
+            &[
+                "free",
+                "--chord-mm",
+                "10",
+                "--thickness-mm",
+                "1",
+                "--plate-density",
+                "2700",
+                "--mass",
+                "1",
+            ],
+            "cannot be used",
+        ),
         (
             &["static", "--summary", "/nonexistent-dir/s.json"],
             "/nonexistent-dir",
@@ -105,10 +217,66 @@ fn summary_json_has_the_stable_keys() {
         "autorotation_time",
         "mean_speed_ft_s",
         "mean_omega_rad_s",
+        "regime",
+        "regime_rule",
+        "regime_from",
+        "mean_descent_speed",
+        "mean_horizontal_speed",
+        "descent_angle",
+        "period",
+        "angle_amplitude",
+        "velocity_scale_m_s",
+        "chord_m",
+        "mean_speed_cm_s",
+        "mean_descent_speed_cm_s",
+        "mean_horizontal_speed_cm_s",
+        "period_s",
+        "frequency_hz",
     ] {
         assert!(v.get(key).is_some(), "summary lacks {key}: {v}");
     }
     assert_eq!(v["case"], "static");
     assert!(v["steps"].as_u64().unwrap() > 0);
     assert!(v["t_end"].as_f64().unwrap() >= 1.0 - 1e-9);
+}
+
+#[test]
+fn a_physical_plate_prints_its_derivation_and_reports_in_physical_units() {
+    let dir = scratch("physical");
+    let summary = dir.join("s.json");
+    let (code, _, err) = platefall(&[
+        "free",
+        "--chord-mm",
+        "10",
+        "--thickness-mm",
+        "0.5",
+        "--plate-density",
+        "2700",
+        "--resolution",
+        "8",
+        "--t-end",
+        "0.5",
+        "--no-save",
+        "--progress",
+        "off",
+        "--summary",
+        summary.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    for line in [
+        "U = √(|ρs/ρf − 1| g t)",
+        "Re = U c/ν = 911.0",
+        "m_f* = t/c = 0.0500",
+        "weight (m* − m_f*) g* = +1.0000 (sinks)",
+        "drawn 1 cell(s) thick = 0.12500 c at N = 8",
+    ] {
+        assert!(err.contains(line), "stderr lacks {line:?}: {err}");
+    }
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&summary).unwrap()).unwrap();
+    assert!((v["velocity_scale_m_s"].as_f64().unwrap() - 0.09145).abs() < 1e-4);
+    assert!((v["re"].as_f64().unwrap() - 911.0).abs() < 0.5);
+    assert!(v["regime"].is_string(), "{v}");
+    // Released from rest by default: it sinks.
+    assert!(v["t_end"].as_f64().unwrap() >= 0.5 - 1e-9);
 }

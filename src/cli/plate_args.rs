@@ -11,6 +11,9 @@ use crate::config::{Fluid, PhysicalPlate, Strip};
 use crate::grid::Grid;
 use crate::sim::{BodyConfig, RunConfig};
 
+/// The three inputs that describe a plate physically; each of the physical options needs them all.
+const PLATE: [&str; 3] = ["chord_mm", "thickness_mm", "plate_density"];
+
 /// A plate described physically (pinned and free cases). Giving any of these describes the plate
 /// by them: `--chord-mm`, `--thickness-mm` and `--plate-density` are then all needed, and Re, m*,
 /// I*, g*, m_f* are derived (so `--preset`, `--mass`, `--inertia`, `--gravity`,
@@ -20,7 +23,7 @@ use crate::sim::{BodyConfig, RunConfig};
 pub struct PhysicalArgs {
     /// Plate width (chord) c in mm.
     #[arg(long, value_name = "MM", allow_negative_numbers = true,
-          requires_all = ["thickness_mm", "plate_density"],
+          requires_all = PLATE,
           conflicts_with_all = ["preset", "mass", "inertia", "gravity", "displaced_mass", "re"])]
     pub chord_mm: Option<f64>,
     /// Plate thickness t in mm (the grid draws it in whole cells of c/N, at least one).
@@ -28,7 +31,7 @@ pub struct PhysicalArgs {
         long,
         value_name = "MM",
         allow_negative_numbers = true,
-        requires = "chord_mm"
+        requires_all = PLATE
     )]
     pub thickness_mm: Option<f64>,
     /// Plate density ρs in kg/m³ (aluminium 2700, steel 7850, PMMA 1190, brass 8500).
@@ -36,18 +39,18 @@ pub struct PhysicalArgs {
         long,
         value_name = "KG_M3",
         allow_negative_numbers = true,
-        requires = "chord_mm"
+        requires_all = PLATE
     )]
     pub plate_density: Option<f64>,
     /// The fluid [default: water].
-    #[arg(long, value_enum, requires = "chord_mm")]
+    #[arg(long, value_enum, requires_all = PLATE)]
     pub fluid: Option<FluidArg>,
     /// Fluid density ρf in kg/m³ (overrides the fluid's).
     #[arg(
         long,
         value_name = "KG_M3",
         allow_negative_numbers = true,
-        requires = "chord_mm"
+        requires_all = PLATE
     )]
     pub fluid_density: Option<f64>,
     /// Fluid kinematic viscosity ν in mm²/s (overrides the fluid's; water 1.004).
@@ -55,7 +58,7 @@ pub struct PhysicalArgs {
         long,
         value_name = "MM2_S",
         allow_negative_numbers = true,
-        requires = "chord_mm"
+        requires_all = PLATE
     )]
     pub viscosity: Option<f64>,
     /// Acceleration of gravity g in m/s².
