@@ -118,9 +118,9 @@ mod tests {
     fn inverse_of_a_full_matrix() {
         let a = [[2.0, 1.0, 0.5], [0.3, 3.0, -1.0], [0.0, 0.7, 1.5]];
         let inv = inverse3(&a).unwrap();
-        for r in 0..3 {
+        for (r, row) in a.iter().enumerate() {
             for c in 0..3 {
-                let v: f64 = (0..3).map(|k| a[r][k] * inv[k][c]).sum();
+                let v: f64 = row.iter().zip(&inv).map(|(x, i)| x * i[c]).sum();
                 let want = if r == c { 1.0 } else { 0.0 };
                 assert!((v - want).abs() < 1e-14, "({r}, {c}): {v}");
             }

@@ -76,7 +76,7 @@ pub struct MotionClass {
 /// The window the regime is judged on: the second half of the time after release.
 pub fn regime_window(samples: &[StepSample], t_release: f64) -> Option<TimeWindow> {
     let t1 = samples.last()?.t;
-    (t1 > t_release).then(|| TimeWindow {
+    (t1 > t_release).then_some(TimeWindow {
         t0: t_release + 0.5 * (t1 - t_release),
         t1,
     })
