@@ -2,6 +2,7 @@
 //! time step of a heavy plate, and heavy plates unchanged. CI-sized: N = 16 (the README gives the
 //! same at N = 32 and 64: `cargo test --release --test light_plates -- --ignored`).
 mod common;
+use std::sync::OnceLock;
 use std::thread;
 
 use platefall::post::analysis::{mean_over, TimeWindow};
@@ -63,10 +64,24 @@ fn card(n: &str, coupling: &str, turns: &str) -> (RunRecord, Summary) {
     (rec, sum)
 }
 
+/// The card under strong coupling at N = 16 for 3 turns, shared by the two tests that need it.
+fn card16_strong() -> &'static (RunRecord, Summary) {
+    static RUN: OnceLock<(RunRecord, Summary)> = OnceLock::new();
+    RUN.get_or_init(|| card("16", "strong", "3"))
+}
+
+/// `f` of the card's strong run for 3 turns at a resolution (shared at N = 16).
+fn with_card_strong<R>(n: &str, f: impl FnOnce(&RunRecord) -> R) -> R {
+    match n {
+        "16" => f(&card16_strong().0),
+        _ => f(&card(n, "strong", "3").0),
+    }
+}
+
 /// Every light plate completes 40 time units from rest with a mean Δt no smaller than the card's.
 fn light_plates_are_stable(n: &'static str) -> Vec<(f64, Summary)> {
     let (runs, card_dt) = thread::scope(|scope| {
-        let card = scope.spawn(move || mean_dt_after_release(&card(n, "strong", "3").0));
+        let card = scope.spawn(move || with_card_strong(n, mean_dt_after_release));
         let runs: Vec<_> = DENSITIES
             .iter()
             .map(|&(m, rho)| scope.spawn(move || (m, strip_from_rest(rho, n))))
@@ -120,13 +135,16 @@ fn light_plates_at_n32() {
     light_plates_are_stable("32");
 }
 
-/// Mean V and θ̇ of the strong run over the explicit run's developed turns agree within 1 %.
-fn heavy_card_unchanged(n: &'static str, turns: &'static str) {
-    let ((rx, sx), (rs, _)) = thread::scope(|scope| {
-        let x = scope.spawn(move || card(n, "explicit", turns));
-        let s = scope.spawn(move || card(n, "strong", turns));
-        (x.join().unwrap(), s.join().unwrap())
+/// The card at N = 16, 3 turns: mean V and θ̇ of the strong run over the explicit run's developed
+/// turns agree within 1 % (measured: 0.03 % over 10 turns at N = 16, 0.015 % over 5 at N = 32).
+#[test]
+fn the_card_falls_as_with_explicit_coupling() {
+    let (rx, sx) = thread::scope(|scope| {
+        let x = scope.spawn(|| card("16", "explicit", "3"));
+        card16_strong();
+        x.join().unwrap()
     });
+    let rs = &card16_strong().0;
     let w = TimeWindow {
         t0: sx.developed_from.expect("the explicit card autorotates"),
         t1: sx.developed_to.unwrap(),
@@ -134,10 +152,12 @@ fn heavy_card_unchanged(n: &'static str, turns: &'static str) {
     let speed: fn(&StepSample) -> f64 = |s| s.speed;
     let rate: fn(&StepSample) -> f64 = |s| s.omega;
     for (name, f) in [("V", speed), ("θ̇", rate)] {
-        let mean = |r: &RunRecord| mean_over(&r.samples, w, f).unwrap();
-        let (x, s) = (mean(&rx), mean(&rs));
+        let (x, s) = (
+            mean_over(&rx.samples, w, f).unwrap(),
+            mean_over(&rs.samples, w, f).unwrap(),
+        );
         eprintln!(
-            "N = {n}: mean {name} explicit {x:.5}, strong {s:.5} ({:+.3} %)",
+            "mean {name} explicit {x:.5}, strong {s:.5} ({:+.3} %)",
             100.0 * (s / x - 1.0)
         );
         assert!(
@@ -145,9 +165,4 @@ fn heavy_card_unchanged(n: &'static str, turns: &'static str) {
             "mean {name}: strong {s} vs explicit {x}"
         );
     }
-}
-
-#[test]
-fn the_card_falls_as_with_explicit_coupling() {
-    heavy_card_unchanged("16", "3");
 }
