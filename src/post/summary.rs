@@ -16,7 +16,7 @@ use crate::sim::{Case, RunConfig, RunRecord, StepSample};
 /// Peak-to-peak C_L below which the flow counts as steady (no Strouhal number).
 pub const STEADY_BAND: f64 = 0.02;
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Default, Serialize)]
 pub struct Summary {
     pub case: String,
     pub status: String,
@@ -207,20 +207,42 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
     (!lags.is_empty()).then(|| lags.iter().sum::<f64>() / lags.len() as f64)
 }
 
-/// Coefficient means and ranges over a window.
-struct CoefficientStats {
-    mean: [Option<f64>; 3],
-    cl_range: Option<(f64, f64)>,
-    max_cd: Option<f64>,
+/// The coefficient keys over the developed window `w` (Strouhal numbers for the static case).
+fn set_coefficients(
+    sum: &mut Summary,
+    config: &RunConfig,
+    s: &[StepSample],
+    w: Option<TimeWindow>,
+    freq: Option<f64>,
+) {
+    let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
+    let cl_range = w.and_then(|w| range_over(s, w, |x| x.cl));
+    (sum.mean_cl, sum.mean_cd, sum.mean_cm) = (mean(|x| x.cl), mean(|x| x.cd), mean(|x| x.cm));
+    (sum.min_cl, sum.max_cl) = (cl_range.map(|r| r.0), cl_range.map(|r| r.1));
+    sum.max_cd = w.and_then(|w| range_over(s, w, |x| x.cd)).map(|r| r.1);
+    if let (Case::Static { alpha, .. }, Some(f)) = (&config.case, freq) {
+        (sum.strouhal_chord, sum.strouhal_width) = (Some(f), Some(f * alpha.sin().abs()));
+    }
 }
 
-fn coefficient_stats(s: &[StepSample], w: Option<TimeWindow>) -> CoefficientStats {
+/// The keys of a moving plate (forced, pinned, free) over the developed window `w`.
+fn set_motion(sum: &mut Summary, config: &RunConfig, rec: &RunRecord, w: Option<TimeWindow>) {
+    let s = &rec.samples;
     let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
-    CoefficientStats {
-        mean: [mean(|x| x.cl), mean(|x| x.cd), mean(|x| x.cm)],
-        cl_range: w.and_then(|w| range_over(s, w, |x| x.cl)),
-        max_cd: w.and_then(|w| range_over(s, w, |x| x.cd)).map(|r| r.1),
+    if config.case.is_coupled() {
+        sum.mean_speed = mean(|x| x.speed);
+        sum.mean_gamma = mean(|x| x.gamma);
+        sum.autorotation_rule = Some(
+            "time of the first complete net turn after release (counted from any reversal)".into(),
+        );
     }
+    sum.mean_omega = mean(|x| x.omega);
+    sum.revolutions = Some(count_turns(s, rec.t_release).revolutions);
+    sum.lag_cd_behind_cl = w.and_then(|w| lag_cd_behind_cl(s, w));
+    sum.peak_cl_rotation = match (sum.mean_omega, sum.min_cl, sum.max_cl) {
+        (Some(om), Some(lo), Some(hi)) => Some(if om >= 0.0 { hi } else { -lo }),
+        _ => None,
+    };
 }
 
 /// The regime window and its classification (coupled runs).
@@ -292,19 +314,7 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
     };
     let motion = motion_of(config, rec);
     let (w, rule, established) = developed(config, rec, freq, motion.as_ref());
-    let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
-    let c = coefficient_stats(s, w);
-    let coupled = config.case.is_coupled();
-    let moving = !matches!(config.case, Case::Static { .. });
-    let (strouhal_chord, strouhal_width) = match (config.case.clone(), freq) {
-        (Case::Static { alpha, .. }, Some(f)) => (Some(f), Some(f * alpha.sin().abs())),
-        _ => (None, None),
-    };
-    let mean_speed = if coupled { mean(|x| x.speed) } else { None };
-    let mean_omega = if moving { mean(|x| x.omega) } else { None };
-    let units = Units::of(config);
-    let fall = fall_keys(s, w, motion.as_ref());
-    Summary {
+    let mut sum = Summary {
         case: config.case.name().into(),
         status: rec.status.name().into(),
         re: config.flow.re,
@@ -316,32 +326,19 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         developed_from: w.map(|w| w.t0),
         developed_to: w.map(|w| w.t1),
         developed_rule: rule,
-        mean_cl: c.mean[0],
-        mean_cd: c.mean[1],
-        mean_cm: c.mean[2],
-        max_cl: c.cl_range.map(|r| r.1),
-        min_cl: c.cl_range.map(|r| r.0),
-        max_cd: c.max_cd,
-        strouhal_chord,
-        strouhal_width,
-        mean_speed,
-        mean_omega,
-        mean_gamma: if coupled { mean(|x| x.gamma) } else { None },
-        revolutions: moving.then(|| count_turns(s, rec.t_release).revolutions),
         autorotation_time: established,
-        autorotation_rule: coupled.then(|| {
-            "time of the first complete net turn after release (counted from any reversal)".into()
-        }),
-        lag_cd_behind_cl: w.filter(|_| moving).and_then(|w| lag_cd_behind_cl(s, w)),
-        peak_cl_rotation: match (moving, mean_omega, c.cl_range) {
-            (true, Some(om), Some((lo, hi))) => Some(if om >= 0.0 { hi } else { -lo }),
-            _ => None,
-        },
-        mean_speed_ft_s: physical(config).and_then(|p| mean_speed.map(|v| p.speed_to_ft_s(v))),
-        mean_omega_rad_s: units.and_then(|u| mean_omega.map(|v| u.rate_rad_s(v.abs()))),
-        physical: physical_keys(units.as_ref(), mean_speed, &fall),
-        fall,
+        ..Summary::default()
+    };
+    set_coefficients(&mut sum, config, s, w, freq);
+    if !matches!(config.case, Case::Static { .. }) {
+        set_motion(&mut sum, config, rec, w);
     }
+    sum.fall = fall_keys(s, w, motion.as_ref());
+    let units = Units::of(config);
+    sum.mean_speed_ft_s = physical(config).and_then(|p| sum.mean_speed.map(|v| p.speed_to_ft_s(v)));
+    sum.mean_omega_rad_s = units.and_then(|u| sum.mean_omega.map(|v| u.rate_rad_s(v.abs())));
+    sum.physical = physical_keys(units.as_ref(), sum.mean_speed, &sum.fall);
+    sum
 }
 
 #[cfg(test)]
