@@ -60,6 +60,13 @@ pub enum SimError {
     /// The plate's motion became non-finite.
     #[error("the plate's motion is not finite at t = {t:.4}")]
     MotionNotFinite { t: f64 },
+    /// The stable time step fell to round-off of t (the motion runs away, e.g. explicit coupling
+    /// of a light plate).
+    #[error(
+        "the time step fell to {dt:.3e} at t = {t:.4}: the motion runs away (as explicit \
+         coupling of a plate lighter than its added mass does)"
+    )]
+    StepCollapsed { t: f64, dt: f64 },
 }
 
 /// The plate's motion law at run time.
@@ -193,6 +200,9 @@ impl Simulation {
             self.release_time(),
             &self.config.time,
         );
+        if dt <= 64.0 * f64::EPSILON * t.abs().max(1.0) {
+            return Err(SimError::StepCollapsed { t, dt });
+        }
         let next = self.next_state(t, dt);
         if !(next.x.is_finite()
             && next.y.is_finite()
