@@ -3,7 +3,8 @@
 //!
 //! The card keeps the seed's scale, U = 3 ft/s (its launch speed), and the seed's weight, which is
 //! taken as the apparent (buoyancy-corrected) weight in air: m_f* = 0, so W = m* g* exactly as before.
-//! (Air's buoyancy on a card is about ρ_air/ρ_card ≈ 0.3 % of its weight.)
+//! (Air's buoyancy on a card about 0.3 mm thick, ρ_air/ρ_card ≈ 0.002, is about 0.2 % of its
+//! weight.)
 
 use crate::body::PlateProps;
 use crate::sim::ReferenceScales;
