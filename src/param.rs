@@ -38,6 +38,10 @@ pub enum Param {
     Mass,
     Inertia,
     Gravity,
+    /// Displaced fluid mass m_f* (buoyancy).
+    DisplacedMass,
+    /// Applied moment on the plate.
+    Torque,
     AbOrder,
     /// Half-width of the near field along x (chords): beyond it the grid transport is implicit.
     NearX,
@@ -45,6 +49,18 @@ pub enum Param {
     NearY,
     /// Worker threads of a run.
     Threads,
+    /// Physical plate width (chord).
+    Chord,
+    /// Physical plate thickness.
+    PlateThickness,
+    /// Plate density ρs.
+    PlateDensity,
+    /// Fluid density ρf.
+    FluidDensity,
+    /// Fluid kinematic viscosity ν.
+    Viscosity,
+    /// Acceleration of gravity g.
+    GravityAccel,
 }
 
 impl Param {
@@ -74,10 +90,18 @@ impl Param {
             Param::Mass => "mass ratio m*",
             Param::Inertia => "inertia ratio I*",
             Param::Gravity => "gravity g*",
+            Param::DisplacedMass => "displaced fluid mass m_f*",
+            Param::Torque => "applied moment (by ρU²c²)",
             Param::AbOrder => "Adams–Bashforth order",
             Param::NearX => "near-field half-width along x (chords)",
             Param::NearY => "near-field half-height along y (chords)",
             Param::Threads => "worker threads (0: one per core)",
+            Param::Chord => "plate width (chord, mm)",
+            Param::PlateThickness => "plate thickness (mm)",
+            Param::PlateDensity => "plate density (kg/m³)",
+            Param::FluidDensity => "fluid density (kg/m³)",
+            Param::Viscosity => "fluid kinematic viscosity (mm²/s)",
+            Param::GravityAccel => "gravity (m/s²)",
         }
     }
 }

@@ -26,34 +26,67 @@ fn bad_values_are_refused_naming_the_value_and_range() {
     let dir = scratch("bad");
     let summary = dir.join("s.json");
     let s = summary.to_str().unwrap();
-    let cases: &[(&[&str], &str)] = &[
-        (&["static", "--re", "-5"], "-5"),
-        (&["static", "--re", "0"], "(0, 100000]"),
-        (&["static", "--resolution", "0"], "4..=1024"),
-        (&["static", "--alpha", "NaN"], "NaN"),
-        (&["static", "--alpha", "4"], "[-3.14"),
-        (&["static", "--t-end", "-1"], "--t-end"),
-        (&["forced", "--rate", "0"], "--rate"),
-        (&["free", "--mass", "0.5"], "0.5"),
-        (&["pinned", "--preset", "none"], "--mass"),
-        (&["free", "--ab-order", "7"], "1..=6"),
+    // Arguments separated by spaces; a physical plate's three inputs are PLATE.
+    const PLATE: &str = "free --chord-mm 10 --thickness-mm 1 --plate-density 2700";
+    let cases: Vec<(String, &str)> = [
+        ("static --re -5", "-5"),
+        ("static --re 0", "(0, 100000]"),
+        ("static --resolution 0", "4..=1024"),
+        ("static --alpha NaN", "NaN"),
+        ("static --alpha 4", "[-3.14"),
+        ("static --t-end -1", "--t-end"),
+        ("forced --rate 0", "--rate"),
+        ("free --mass 0", "(0, 1000000]"),
+        ("free --inertia -0.1", "--inertia"),
+        ("pinned --preset none", "--mass"),
+        ("free --ab-order 7", "1..=6"),
+        ("free --displaced-mass -1", "[0, 1000000]"),
+        ("pinned --torque 1e9", "[-1000, 1000]"),
+        ("pinned --v0 -1", "[0, 10]"),
+        ("free --coupling implicit", "implicit"),
+        ("free --chord-mm 10", "the following required"),
+        ("free --fluid air", "the following required"),
         (
-            &["static", "--near-x", "0.2"],
+            "free --chord-mm 0 --thickness-mm 1 --plate-density 2700",
+            "(0, 10000]",
+        ),
+        (
+            "free --chord-mm 10 --thickness-mm 6 --plate-density 2700",
+            "(0, 5]",
+        ),
+        (
+            "free --chord-mm 10 --thickness-mm 1 --plate-density -1",
+            "(0, 100000]",
+        ),
+        ("PLATE --fluid-density 0", "--fluid-density"),
+        ("PLATE --viscosity 0", "(0, 1000000]"),
+        ("PLATE --g -9.81", "(0, 1000]"),
+        (
+            "free --chord-mm 1000 --thickness-mm 10 --plate-density 2700 --fluid air",
+            "Reynolds number",
+        ),
+        ("PLATE --mass 1", "cannot be used"),
+        (
+            "static --near-x 0.2",
             "--near-x 0.2 is out of range: accepted [0.5, 1000]",
         ),
-        (&["forced", "--near-y", "NaN"], "--near-y NaN"),
+        ("forced --near-y NaN", "--near-y NaN"),
         (
-            &["static", "--threads", "300"],
+            "static --threads 300",
             "--threads 300 is out of range: accepted 0..=256",
         ),
-        (&["free", "--far-field", "sideways"], "sideways"),
+        ("free --far-field sideways", "sideways"),
         (
-            &["static", "--summary", "/nonexistent-dir/s.json"],
+            "static --summary /nonexistent-dir/s.json",
             "/nonexistent-dir",
         ),
-    ];
-    for (args, needle) in cases {
-        let mut full: Vec<&str> = args.to_vec();
+    ]
+    .into_iter()
+    .map(|(a, n)| (a.replace("PLATE", PLATE), n))
+    .collect();
+    for (line, needle) in &cases {
+        let args: Vec<&str> = line.split_whitespace().collect();
+        let mut full: Vec<&str> = args.clone();
         full.extend_from_slice(&["--no-save", "--summary", s]);
         // The later --summary wins for the last case; keep the bad one there.
         if args.contains(&"--summary") {
@@ -114,10 +147,72 @@ fn summary_json_has_the_stable_keys() {
         "autorotation_time",
         "mean_speed_ft_s",
         "mean_omega_rad_s",
+        "regime",
+        "regime_rule",
+        "regime_from",
+        "mean_descent_speed",
+        "mean_horizontal_speed",
+        "descent_angle",
+        "period",
+        "angle_amplitude",
+        "velocity_scale_m_s",
+        "chord_m",
+        "mean_speed_cm_s",
+        "mean_descent_speed_cm_s",
+        "mean_horizontal_speed_cm_s",
+        "period_s",
+        "frequency_hz",
     ] {
         assert!(v.get(key).is_some(), "summary lacks {key}: {v}");
     }
     assert_eq!(v["case"], "static");
     assert!(v["steps"].as_u64().unwrap() > 0);
     assert!(v["t_end"].as_f64().unwrap() >= 1.0 - 1e-9);
+}
+
+#[test]
+fn a_physical_plate_prints_its_derivation_and_reports_in_physical_units() {
+    let (code, err, v) = run_with_summary(
+        "physical",
+        &[
+            "free",
+            "--chord-mm",
+            "10",
+            "--thickness-mm",
+            "0.5",
+            "--plate-density",
+            "2700",
+            "--resolution",
+            "8",
+            "--t-end",
+            "0.5",
+        ],
+    );
+    assert_eq!(code, 0, "{err}");
+    for line in [
+        "U = √(|ρs/ρf − 1| g t)",
+        "Re = U c/ν = 911.0",
+        "m_f* = t/c = 0.0500",
+        "weight (m* − m_f*) g* = +1.0000 (sinks)",
+        "drawn 1 cell(s) thick = 0.12500 c at N = 8",
+    ] {
+        assert!(err.contains(line), "stderr lacks {line:?}: {err}");
+    }
+    assert!((v["velocity_scale_m_s"].as_f64().unwrap() - 0.09145).abs() < 1e-4);
+    assert!((v["re"].as_f64().unwrap() - 911.0).abs() < 0.5);
+    assert!(v["regime"].is_string(), "{v}");
+    // Released from rest by default: it sinks.
+    assert!(v["t_end"].as_f64().unwrap() >= 0.5 - 1e-9);
+}
+
+/// Runs with `--no-save --progress off --summary` in a scratch directory: exit code, stderr and
+/// the summary JSON.
+fn run_with_summary(name: &str, args: &[&str]) -> (i32, String, serde_json::Value) {
+    let summary = scratch(name).join("s.json");
+    let path = summary.to_str().unwrap();
+    let tail = ["--no-save", "--progress", "off", "--summary", path];
+    let all: Vec<&str> = args.iter().copied().chain(tail).collect();
+    let (code, _, err) = platefall(&all);
+    let text = std::fs::read_to_string(&summary).unwrap_or_default();
+    (code, err, serde_json::from_str(&text).unwrap_or_default())
 }

@@ -1,5 +1,7 @@
 //! Added-mass stability advisory for explicit fluid–body coupling (SPEC §6, "Explicit coupling can
-//! go unstable for light plates (added mass)").
+//! go unstable for light plates (added mass)"). The default strong coupling
+//! ([`StrongCoupling`](super::StrongCoupling)) has no such limit; this advice is for runs that
+//! choose the explicit one.
 //!
 //! The fluid force contains a part proportional to the body's acceleration (added mass). With the
 //! force lagged by one step, the body sees −(m_a/m*) × its own previous acceleration, so the
@@ -11,7 +13,6 @@
 use std::f64::consts::PI;
 
 use super::rigid::PlateProps;
-use crate::param::{InputError, Param};
 
 /// 2-D added mass of a flat plate of chord 1 in normal motion, π(c/2)²ρ = π/4 (by ρc²).
 pub const PLATE_ADDED_MASS: f64 = PI / 4.0;
@@ -53,39 +54,4 @@ pub fn coupling_advice(props: &PlateProps) -> Option<String> {
             parts.join("; ")
         )
     })
-}
-
-/// Refuse properties for which explicit coupling is known to diverge: m* ≤ π/4 or I* ≤ π/128
-/// (added-to-body ratio ≥ 1), or non-finite values.
-pub fn coupling_check(props: &PlateProps) -> Result<(), InputError> {
-    let limits = [
-        (
-            Param::Mass,
-            "m*",
-            props.mass,
-            PLATE_ADDED_MASS,
-            "added mass π/4",
-        ),
-        (
-            Param::Inertia,
-            "I*",
-            props.inertia,
-            PLATE_ADDED_INERTIA,
-            "added pitch inertia π/128",
-        ),
-    ];
-    for (param, symbol, value, added, what) in limits {
-        if !(value.is_finite() && value > added) {
-            return Err(InputError::Inconsistent {
-                param,
-                value,
-                why: format!(
-                    "explicit coupling diverges when the {what} ≈ {added:.5} is ≥ the plate's \
-                     (ratio {:.3}); accepted range {symbol} > {added:.5}",
-                    added / value
-                ),
-            });
-        }
-    }
-    Ok(())
 }

@@ -1,13 +1,16 @@
 //! Rigid-body flight mechanics of the plate (SPEC §6): the Cartesian equations of motion, the
-//! variable-step Adams–Bashforth integrator and the added-mass coupling advisory.
+//! variable-step Adams–Bashforth integrator, the strong (added-mass implicit) coupling and the
+//! advisory for explicit coupling.
 
 pub mod adams;
 pub mod coupling;
 pub mod rigid;
+pub mod strong;
 
 pub use adams::{ab_weights, AbError, AbStart, AdamsBashforth, MAX_ORDER};
-pub use coupling::{coupling_advice, coupling_check, PLATE_ADDED_INERTIA, PLATE_ADDED_MASS};
+pub use coupling::{coupling_advice, PLATE_ADDED_INERTIA, PLATE_ADDED_MASS};
 pub use rigid::{
     advance, body_to_inertial, inertial_to_body, state_derivative, wrap_angle, BodyState, Dof,
     InertialLoads, PlateProps, RigidBody,
 };
+pub use strong::{Coupling, StrongCoupling};

@@ -9,7 +9,9 @@ use std::f64::consts::PI;
 use super::adams::{AbError, AbStart, AdamsBashforth};
 use crate::flow::Frame;
 
-/// Non-dimensional plate properties (SPEC §2): m* = m/(ρc²b), I* = I/(ρc⁴b), g* = g c/U².
+/// Non-dimensional plate properties (SPEC §2): m* = m/(ρc²b), I* = I/(ρc⁴b), g* = g c/U², the
+/// displaced fluid mass m_f* (buoyancy, SPEC §2: the weight is g (ρs − ρf) t c per span) and an
+/// applied moment.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PlateProps {
     /// m*, mass per unit span by ρc².
@@ -18,6 +20,37 @@ pub struct PlateProps {
     pub inertia: f64,
     /// g*, gravity by U²/c.
     pub gravity: f64,
+    /// m_f*, the mass of the fluid the plate displaces by ρc² (t/c for a plate of thickness t);
+    /// buoyancy m_f* g* acts upwards. 0 when the weight given is already the apparent weight.
+    #[serde(default)]
+    pub displaced: f64,
+    /// An applied moment about the centre by ρU²c² (counter-clockwise), e.g. a motor on the pin.
+    #[serde(default)]
+    pub torque: f64,
+}
+
+impl PlateProps {
+    /// Plate properties without buoyancy or applied moment.
+    pub fn new(mass: f64, inertia: f64, gravity: f64) -> Self {
+        Self {
+            mass,
+            inertia,
+            gravity,
+            displaced: 0.0,
+            torque: 0.0,
+        }
+    }
+
+    /// The downward acceleration the buoyancy-corrected weight alone gives the plate's own mass,
+    /// g*(1 − m_f*/m*) (negative for a plate lighter than the fluid: it rises).
+    pub fn apparent_gravity(&self) -> f64 {
+        self.gravity * (1.0 - self.displaced / self.mass)
+    }
+
+    /// The buoyancy-corrected weight per span, (m* − m_f*) g*, by ρU²c (downwards).
+    pub fn weight(&self) -> f64 {
+        (self.mass - self.displaced) * self.gravity
+    }
 }
 
 /// Rigid-body state in the inertial frame (SPEC §3, §6): centre (X, Y), pitch θ and their rates.
@@ -137,22 +170,25 @@ impl BodyState {
     }
 }
 
-/// Time derivative of (X, Y, θ, Ẋ, Ẏ, θ̇) under the Cartesian equations of SPEC §6:
-/// `Free`: (Ẋ, Ẏ, θ̇, F_X/m*, F_Y/m* − g*, M/I*); `PitchOnly`: (Ẋ, Ẏ, θ̇, 0, 0, M/I*);
-/// `Prescribed`: (Ẋ, Ẏ, θ̇, 0, 0, 0) (constant velocity; the real prescribed motion is the caller's).
+/// Time derivative of (X, Y, θ, Ẋ, Ẏ, θ̇) under the Cartesian equations of SPEC §6 with the loads
+/// taken as given (explicit coupling), T the applied moment and g*(1 − m_f*/m*) the buoyancy-
+/// corrected gravity: `Free`: (Ẋ, Ẏ, θ̇, F_X/m*, F_Y/m* − g*(1 − m_f*/m*), (M + T)/I*);
+/// `PitchOnly`: (Ẋ, Ẏ, θ̇, 0, 0, (M + T)/I*); `Prescribed`: (Ẋ, Ẏ, θ̇, 0, 0, 0) (constant velocity;
+/// the real prescribed motion is the caller's).
 pub fn state_derivative(
     props: &PlateProps,
     dof: Dof,
     s: &BodyState,
     loads: &InertialLoads,
 ) -> [f64; 6] {
+    let pitch = (loads.moment + props.torque) / props.inertia;
     let (ax, ay, alpha) = match dof {
         Dof::Prescribed => (0.0, 0.0, 0.0),
-        Dof::PitchOnly => (0.0, 0.0, loads.moment / props.inertia),
+        Dof::PitchOnly => (0.0, 0.0, pitch),
         Dof::Free => (
             loads.fx / props.mass,
-            loads.fy / props.mass - props.gravity,
-            loads.moment / props.inertia,
+            loads.fy / props.mass - props.apparent_gravity(),
+            pitch,
         ),
     };
     [s.xdot, s.ydot, s.omega, ax, ay, alpha]
@@ -245,5 +281,17 @@ impl RigidBody {
             loads,
             h,
         );
+    }
+
+    /// Advance t → t + h with a derivative of (X, Y, θ, Ẋ, Ẏ, θ̇) the caller computed (strong
+    /// coupling: [`StrongCoupling::derivative`](super::strong::StrongCoupling::derivative)).
+    /// Nothing happens for `Dof::Prescribed`.
+    pub fn step_with(&mut self, t: f64, f: [f64; 6], h: f64) {
+        if self.dof == Dof::Prescribed {
+            return;
+        }
+        let mut y = self.state.to_array();
+        self.ab.step(t, &mut y, f, h);
+        self.state = BodyState::from_array(y);
     }
 }

@@ -4,10 +4,9 @@ use std::path::PathBuf;
 use clap::{Args, ValueEnum};
 
 use super::flags::ArgError;
+use super::plate_args::{CouplingArg, PhysicalArgs};
 use super::record_args::RecordArgs;
 use super::Command;
-use crate::body::{AbStart, PlateProps};
-use crate::config::PhysicalPlate;
 use crate::flow::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
 use crate::grid::{GridSpec, Stretch};
 use crate::param::{check_whole, Param};
@@ -117,12 +116,15 @@ pub struct ForcedArgs {
     pub record: RecordArgs,
 }
 
-/// Plate properties and the body integrator (pinned and free cases).
+/// Plate properties, the coupling and the body integrator (pinned and free cases).
 #[derive(Args, Debug, Clone)]
+#[command(next_help_heading = "Plate, coupling and release")]
 pub struct BodyArgs {
-    /// Physical preset giving Re, m*, I*, g*: `card` is the seed's card in sea-level air (SPEC §8).
-    #[arg(long, value_enum, default_value_t = Preset::Card)]
-    pub preset: Preset,
+    /// Preset giving Re, m*, I*, g*: `card` is the seed's card in sea-level air (SPEC §8; its
+    /// weight is the apparent weight, m_f* = 0) [default: card, unless the plate is described
+    /// physically].
+    #[arg(long, value_enum)]
+    pub preset: Option<Preset>,
     /// Mass ratio m* = m/(ρc²b) (overrides the preset).
     #[arg(long, allow_negative_numbers = true)]
     pub mass: Option<f64>,
@@ -132,20 +134,45 @@ pub struct BodyArgs {
     /// Gravity g* = g c/U² (overrides the preset; ignored by `pinned`).
     #[arg(long, allow_negative_numbers = true)]
     pub gravity: Option<f64>,
+    /// Displaced fluid mass m_f* = ρf × volume/(ρf c² b) (t/c for a plate of thickness t): the
+    /// weight is (m* − m_f*) g* [default: 0, the weight given is the apparent weight].
+    #[arg(long, allow_negative_numbers = true)]
+    pub displaced_mass: Option<f64>,
+    /// An applied moment on the plate, by ρU²c² (counter-clockwise positive).
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub torque: f64,
+    /// How the flow's loads enter the plate's equations (`explicit` reproduces the seed's scheme
+    /// and the earlier results).
+    #[arg(long, value_enum, default_value_t = CouplingArg::Strong)]
+    pub coupling: CouplingArg,
     /// Adams–Bashforth order for the plate's equations of motion, 1..=6.
     #[arg(long, default_value_t = 2)]
     pub ab_order: usize,
     /// How the Adams–Bashforth history is started at release.
     #[arg(long, value_enum, default_value_t = AbStartArg::Ramp)]
     pub ab_start: AbStartArg,
-    /// Hold the plate at its launch attitude for this long before release (flow development).
-    #[arg(long, default_value_t = 5.0, allow_negative_numbers = true)]
-    pub develop: f64,
+    /// Hold the plate at its launch attitude for this long before release (flow development)
+    /// [default: 5, or 0 when it starts from rest].
+    #[arg(long, allow_negative_numbers = true)]
+    pub develop: Option<f64>,
     /// Stop after this many net turns after release, or at --t-end, whichever comes first
     /// [default: 10 for free, none for pinned].
     #[arg(long, allow_negative_numbers = true)]
     pub turns: Option<f64>,
+    #[command(flatten)]
+    pub physical: PhysicalArgs,
 }
+
+impl BodyArgs {
+    /// The development time: as given, else 5 for a launch at speed and 0 from rest.
+    fn develop_for(&self, speed: f64) -> f64 {
+        self.develop
+            .unwrap_or(if speed == 0.0 { 0.0 } else { DEFAULT_DEVELOP })
+    }
+}
+
+/// Development time before release for a plate launched at speed (c/U).
+const DEFAULT_DEVELOP: f64 = 5.0;
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
 pub enum Preset {
@@ -168,29 +195,38 @@ pub struct PinnedArgs {
     /// Angle of attack α₀ (rad) held during development, then released.
     #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
     pub alpha0: f64,
-    #[command(flatten)]
-    pub body: BodyArgs,
+    /// Translation speed on the reference speed (the wind tunnel's; 0: a plate on a pin in still
+    /// fluid, e.g. driven by --torque).
+    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    pub v0: f64,
     #[command(flatten)]
     pub solver: SolverArgs,
+    #[command(flatten)]
+    pub body: BodyArgs,
     #[command(flatten)]
     pub record: RecordArgs,
 }
 
 #[derive(Args, Debug)]
 pub struct FreeArgs {
-    /// Launch speed V₀ on the reference speed (the card: 1.0 = 3 ft/s).
-    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
-    pub v0: f64,
+    /// Launch speed V₀ on the reference speed [default: 1, the card's 3 ft/s; 0, released from
+    /// rest, for a physically described plate].
+    #[arg(long, allow_negative_numbers = true)]
+    pub v0: Option<f64>,
     /// Launch flight-path angle γ₀ (rad; −π/4 is down and to the right).
     #[arg(long, default_value_t = -std::f64::consts::FRAC_PI_4, allow_negative_numbers = true)]
     pub gamma0: f64,
     /// Launch angle of attack α₀ (rad); the plate is held at θ = γ₀ + α₀ until release.
     #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
     pub alpha0: f64,
-    #[command(flatten)]
-    pub body: BodyArgs,
+    /// Pitch angle θ₀ at release (rad), instead of α₀ (α₀ = θ₀ − γ₀): the natural input for a plate
+    /// released from rest.
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "alpha0")]
+    pub theta0: Option<f64>,
     #[command(flatten)]
     pub solver: SolverArgs,
+    #[command(flatten)]
+    pub body: BodyArgs,
     #[command(flatten)]
     pub record: RecordArgs,
 }
@@ -241,47 +277,6 @@ impl SolverArgs {
     }
 }
 
-impl BodyArgs {
-    /// Plate properties and default Re: the preset's, overridden by explicit values.
-    fn resolve(&self) -> Result<(BodyConfig, Option<f64>), ArgError> {
-        let (preset, base, re) = match self.preset {
-            Preset::Card => {
-                let card = PhysicalPlate::card();
-                (
-                    Some("card".to_string()),
-                    Some(card.props()),
-                    Some(card.reynolds()),
-                )
-            }
-            Preset::None => (None, None, None),
-        };
-        let pick = |flag: &'static str, given: Option<f64>, from: Option<f64>| {
-            given.or(from).ok_or(ArgError::Missing {
-                flag,
-                when: "with --preset none",
-            })
-        };
-        let props = PlateProps {
-            mass: pick("--mass", self.mass, base.map(|b| b.mass))?,
-            inertia: pick("--inertia", self.inertia, base.map(|b| b.inertia))?,
-            gravity: pick("--gravity", self.gravity, base.map(|b| b.gravity))?,
-        };
-        let start = match self.ab_start {
-            AbStartArg::Ramp => AbStart::Ramp,
-            AbStartArg::Extrapolate => AbStart::Extrapolate,
-        };
-        Ok((
-            BodyConfig {
-                preset,
-                props,
-                ab_order: self.ab_order,
-                ab_start: start,
-            },
-            re,
-        ))
-    }
-}
-
 /// The run configuration of a case subcommand, validated.
 pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
     let cfg = match cmd {
@@ -303,16 +298,19 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
         Command::Pinned(a) => {
             let case = Case::Pinned {
                 alpha0: a.alpha0,
-                develop: a.body.develop,
+                develop: a.body.develop_for(a.v0),
+                speed: a.v0,
             };
             coupled_config(&a.solver, &a.body, case, 60.0, a.body.turns)?
         }
         Command::Free(a) => {
+            let physical = a.body.physical.chord_mm.is_some();
+            let v0 = a.v0.unwrap_or(if physical { 0.0 } else { 1.0 });
             let case = Case::Free {
-                v0: a.v0,
+                v0,
                 gamma0: a.gamma0,
-                alpha0: a.alpha0,
-                develop: a.body.develop,
+                alpha0: a.theta0.map_or(a.alpha0, |th| th - a.gamma0),
+                develop: a.body.develop_for(v0),
             };
             let turns = Some(a.body.turns.unwrap_or(10.0));
             coupled_config(&a.solver, &a.body, case, 80.0, turns)?
@@ -327,7 +325,8 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
     Ok(cfg)
 }
 
-/// A pinned or free run: the plate from its preset and overrides, Re from --re or the preset.
+/// A pinned or free run: the plate from its preset and overrides or its physical description; Re
+/// from --re or the plate; a physical plate's thickness for the grid unless --thickness is given.
 fn coupled_config(
     solver: &SolverArgs,
     body: &BodyArgs,
@@ -335,10 +334,23 @@ fn coupled_config(
     default_t_end: f64,
     turns: Option<f64>,
 ) -> Result<RunConfig, ArgError> {
-    let (body, preset_re) = body.resolve()?;
-    let re = solver.re.or(preset_re).ok_or(ArgError::Missing {
+    let resolved = body.resolve()?;
+    let re = solver.re.or(resolved.re).ok_or(ArgError::Missing {
         flag: "--re",
         when: "with --preset none",
     })?;
-    Ok(solver.config(case, re, default_t_end, Some(body), turns))
+    let mut cfg = solver.config(case, re, default_t_end, Some(resolved.body), turns);
+    if let (None, Some(t)) = (solver.thickness, resolved.thickness) {
+        cfg.grid.thickness = t;
+    }
+    Ok(cfg)
+}
+
+/// What to tell the user about the plate before a run (see [`BodyArgs::notes`]).
+pub fn plate_notes(cmd: &Command, config: &RunConfig) -> Vec<String> {
+    match cmd {
+        Command::Pinned(a) => a.body.notes(config),
+        Command::Free(a) => a.body.notes(config),
+        _ => Vec::new(),
+    }
 }

@@ -26,10 +26,18 @@ pub fn flag(p: Param) -> &'static str {
         Param::Mass => "--mass",
         Param::Inertia => "--inertia",
         Param::Gravity => "--gravity",
+        Param::DisplacedMass => "--displaced-mass",
+        Param::Torque => "--torque",
         Param::AbOrder => "--ab-order",
         Param::NearX => "--near-x",
         Param::NearY => "--near-y",
         Param::Threads => "--threads",
+        Param::Chord => "--chord-mm",
+        Param::PlateThickness => "--thickness-mm",
+        Param::PlateDensity => "--plate-density",
+        Param::FluidDensity => "--fluid-density",
+        Param::Viscosity => "--viscosity",
+        Param::GravityAccel => "--g",
     }
 }
 

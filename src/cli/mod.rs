@@ -4,6 +4,7 @@
 pub mod args;
 pub mod bench;
 pub mod flags;
+pub mod plate_args;
 pub mod record_args;
 pub mod run;
 pub mod threads;
@@ -11,7 +12,8 @@ pub mod threads;
 use clap::{Parser, Subcommand};
 
 pub use args::{
-    run_config, BodyArgs, FarFieldArg, ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs,
+    plate_notes, run_config, BodyArgs, FarFieldArg, ForcedArgs, FreeArgs, PinnedArgs, SolverArgs,
+    StaticArgs,
 };
 pub use bench::BenchArgs;
 pub use flags::ArgError;

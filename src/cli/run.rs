@@ -91,10 +91,8 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
         config.time.t_end
     };
     let opts = record_args.resolve(config.case.name(), progress_end)?;
-    if let Some(b) = &config.body {
-        if let Some(advice) = crate::body::coupling_advice(&b.props) {
-            eprintln!("warning: {advice}");
-        }
+    for line in super::args::plate_notes(cmd, &config) {
+        eprintln!("{line}");
     }
     Ok(Prepared {
         config,

@@ -1,7 +1,16 @@
 //! The seed's card (SPEC §8, seed Table I) in physical units, and its non-dimensional parameters
 //! (SPEC §2). Units are the seed's: ft, lbf, slug, s.
+//!
+//! The card keeps the seed's scale, U = 3 ft/s (its launch speed), and the seed's weight, which is
+//! taken as the apparent (buoyancy-corrected) weight in air: m_f* = 0, so W = m* g* exactly as before.
+//! (Air's buoyancy on a card about 0.3 mm thick, ρ_air/ρ_card ≈ 0.002, is about 0.2 % of its
+//! weight.)
 
 use crate::body::PlateProps;
+use crate::sim::ReferenceScales;
+
+/// Metres per foot.
+pub const FOOT_M: f64 = 0.3048;
 
 /// A physical plate in a physical fluid (SPEC §2, §8), feet–slug–second units.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -81,12 +90,20 @@ impl PhysicalPlate {
         self.chord_ft / self.speed_ft_s
     }
 
-    /// (m*, I*, g*) for the body equations.
+    /// (m*, I*, g*) for the body equations; the weight is the apparent weight (m_f* = 0).
     pub fn props(&self) -> PlateProps {
-        PlateProps {
-            mass: self.mass_ratio(),
-            inertia: self.inertia_ratio(),
-            gravity: self.gravity_ratio(),
+        PlateProps::new(
+            self.mass_ratio(),
+            self.inertia_ratio(),
+            self.gravity_ratio(),
+        )
+    }
+
+    /// The chord and velocity scale in SI units, for reports in physical units.
+    pub fn scales(&self) -> ReferenceScales {
+        ReferenceScales {
+            chord_m: self.chord_ft * FOOT_M,
+            speed_m_s: self.speed_ft_s * FOOT_M,
         }
     }
 

@@ -19,6 +19,7 @@
 //! The hot path allocates nothing after [`FlowSolver::new`]. The u and v halves of each phase run
 //! in parallel (`rayon::join`); called from inside a rayon pool that allocates nothing either.
 mod advance_implicit;
+pub mod added_mass;
 pub mod array;
 pub mod band;
 pub mod boundary;
@@ -31,6 +32,7 @@ pub mod pressure;
 pub mod transport;
 pub mod zones;
 
+pub use added_mass::AddedMass;
 pub use boundary::{OuterBc, VelocityFn};
 pub use frame::Frame;
 pub use plate::BodyAxesLoads;
@@ -154,6 +156,9 @@ pub struct FlowSolver {
     implicit: Option<Box<State>>,
     /// Motion of the plate at the current time level.
     pub frame: Frame,
+    /// Motion of the plate at the previous time level (`frame` before the first step); with
+    /// `dt_prev` it gives the change of motion the last projection answered ([`AddedMass`]).
+    pub frame_prev: Frame,
     /// Current time and the last step taken (0 before the first step).
     pub t: f64,
     pub dt_prev: f64,
@@ -198,6 +203,7 @@ impl FlowSolver {
             zones,
             implicit,
             frame,
+            frame_prev: frame,
             t: 0.0,
             dt_prev: 0.0,
             steps: 0,
@@ -291,6 +297,7 @@ impl FlowSolver {
         );
         self.prepared = false;
         let t_next = self.t + dt;
+        self.frame_prev = self.frame;
         if self.implicit.is_some() {
             self.predict_implicit(dt, next);
             self.project_incremental(dt);

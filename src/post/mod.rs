@@ -7,7 +7,8 @@
 //! logger thread (`record`) calls the painting, so that work runs beside the solver, not in it.
 //!
 //! - [`analysis`]: developed windows, means, the dominant lift frequency, turn counting.
-//! - [`summary`]: the run summary with its stable JSON keys; [`report`]: the end-of-run text.
+//! - [`summary`]: the run summary with its stable JSON keys; [`report`]: the end-of-run text;
+//!   [`regime`]: what a falling plate is doing (steady, fluttering, tumbling, chaotic).
 //! - [`fields`]: the staggered-grid quantities. [`vorticity_at_nodes`] (ω = ∂v/∂x − ∂u/∂y at cell
 //!   corners), [`stream_function_at_nodes`] (ψ with u = ψ_y, v = −ψ_x, integrated from the MAC face
 //!   fluxes: exact for a discretely divergence-free field), and [`StreamFrame`], the observer frames
@@ -22,6 +23,7 @@ pub mod analysis;
 pub mod contour;
 pub mod fields;
 pub mod painter;
+pub mod regime;
 pub mod report;
 pub mod resample;
 pub mod summary;

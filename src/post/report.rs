@@ -131,6 +131,7 @@ fn coupled_part(case: &Case, sum: &Summary, r: &mut String) -> Vec<Row> {
         fmt_opt(sum.mean_omega, 3),
         fmt_opt(sum.mean_gamma, 3)
     ));
+    r.push_str(&fall_part(sum));
     if matches!(case, Case::Pinned { .. }) {
         let rate = fmt_opt(sum.mean_omega.map(f64::abs), 3);
         return vec![
@@ -167,6 +168,39 @@ fn coupled_part(case: &Case, sum: &Summary, r: &mut String) -> Vec<Row> {
             "≈ 6.2 (seed)",
         ),
     ]
+}
+
+/// What the falling plate is doing, in the run's units and, when known, physical ones.
+fn fall_part(sum: &Summary) -> String {
+    let (f, p) = (&sum.fall, &sum.physical);
+    let unit = |x: Option<f64>, u: &str, d: usize| {
+        x.map(|v| format!(" ({v:.d$} {u})")).unwrap_or_default()
+    };
+    let mut text = format!(
+        "regime {} (judged from t = {}): period {}{}{}, angle amplitude {} rad\n\
+         mean descent speed {}{}, horizontal drift {}{}, descent angle {} rad\n",
+        f.regime.as_deref().unwrap_or("—"),
+        fmt_opt(f.regime_from, 2),
+        fmt_opt(f.period, 3),
+        unit(p.period_s, "s", 3),
+        unit(p.frequency_hz, "Hz", 3),
+        fmt_opt(f.angle_amplitude, 3),
+        fmt_opt(f.mean_descent_speed, 3),
+        unit(p.mean_descent_speed_cm_s, "cm/s", 2),
+        fmt_opt(f.mean_horizontal_speed, 3),
+        unit(p.mean_horizontal_speed_cm_s, "cm/s", 2),
+        fmt_opt(f.descent_angle, 3),
+    );
+    if let (Some(u), Some(c)) = (p.velocity_scale_m_s, p.chord_m) {
+        text.push_str(&format!(
+            "physical units: U = {:.3} cm/s, c = {:.2} mm; mean speed {} cm/s, mean |θ̇| {} rad/s\n",
+            100.0 * u,
+            1e3 * c,
+            fmt_opt(p.mean_speed_cm_s, 2),
+            fmt_opt(sum.mean_omega_rad_s, 2)
+        ));
+    }
+    text
 }
 
 /// The comparison table with aligned columns (empty when there is nothing to compare).

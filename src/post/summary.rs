@@ -1,5 +1,7 @@
 //! The run summary: stable JSON keys for scripts, computed from the time series of a run over its
-//! developed part.
+//! developed part (SPEC §8), with what a falling plate is doing ([`FallKeys`], SPEC §1 case D)
+//! and the results in physical units when the plate has them ([`PhysicalKeys`], SPEC §2).
+//! Everything is computed from `&[StepSample]` windows.
 use std::f64::consts::PI;
 
 use serde::Serialize;
@@ -7,13 +9,14 @@ use serde::Serialize;
 use super::analysis::{
     count_turns, dominant_frequency, mean_over, range_over, whole_periods, TimeWindow,
 };
-use crate::config::physical;
+use super::regime::{classify, regime_window, MotionClass};
+use crate::config::{physical, Units};
 use crate::sim::{Case, RunConfig, RunRecord, StepSample};
 
 /// Peak-to-peak C_L below which the flow counts as steady (no Strouhal number).
 pub const STEADY_BAND: f64 = 0.02;
 
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, Default, Serialize)]
 pub struct Summary {
     pub case: String,
     pub status: String,
@@ -49,18 +52,61 @@ pub struct Summary {
     /// Peak lift coefficient in the sense of the rotation (max C_L turning counter-clockwise,
     /// −min C_L turning clockwise), over the developed part; the seed's "max C_L in autorotation".
     pub peak_cl_rotation: Option<f64>,
-    /// Card preset: the means in physical units.
+    /// Card preset: the mean speed in the card's feet.
     pub mean_speed_ft_s: Option<f64>,
+    /// The mean rotation rate |θ̇| in rad/s (plates with physical units).
     pub mean_omega_rad_s: Option<f64>,
+    #[serde(flatten)]
+    pub fall: FallKeys,
+    #[serde(flatten)]
+    pub physical: PhysicalKeys,
+}
+
+/// What a falling (or pinned) plate is doing, over the developed part; null for static and forced
+/// runs. Descent is positive downwards; the regime rule is in `post::regime`.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct FallKeys {
+    /// steady, fluttering, tumbling, chaotic or undetermined.
+    pub regime: Option<String>,
+    pub regime_rule: Option<String>,
+    /// Start of the window the regime is judged on (it ends with the run).
+    pub regime_from: Option<f64>,
+    /// −mean Ẏ (positive when sinking).
+    pub mean_descent_speed: Option<f64>,
+    /// mean Ẋ: the mean horizontal drift (signed; ≈ 0 for a plate that flutters in place).
+    pub mean_horizontal_speed: Option<f64>,
+    /// Angle of the mean path below the horizontal, atan2(descent, |drift|) (rad; π/2 straight
+    /// down, negative when rising).
+    pub descent_angle: Option<f64>,
+    /// One full oscillation of θ (fluttering) or one full turn (tumbling), in c/U.
+    pub period: Option<f64>,
+    /// Half the peak-to-peak range of θ when the plate makes no full turn (rad).
+    pub angle_amplitude: Option<f64>,
+}
+
+/// The results in physical units (plates with physical scales: described physically, or the card).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct PhysicalKeys {
+    /// U (m/s) and c (m) behind the conversions.
+    pub velocity_scale_m_s: Option<f64>,
+    pub chord_m: Option<f64>,
+    pub mean_speed_cm_s: Option<f64>,
+    pub mean_descent_speed_cm_s: Option<f64>,
+    pub mean_horizontal_speed_cm_s: Option<f64>,
+    pub period_s: Option<f64>,
+    pub frequency_hz: Option<f64>,
 }
 
 /// The developed window: for coupled cases the whole turns after autorotation is established (the
-/// first complete turn after release); for forced rotation the whole half-turns after spin-up plus
-/// one half-turn; for the static case the second half of the run, trimmed to whole lift periods.
+/// first complete turn after release), or, for a plate that makes no two whole turns, the regime
+/// window trimmed to whole periods of its motion; for forced rotation the whole half-turns after
+/// spin-up plus one half-turn; for the static case the second half of the run, trimmed to whole lift
+/// periods.
 fn developed(
     config: &RunConfig,
     rec: &RunRecord,
     freq: Option<f64>,
+    motion: Option<&(TimeWindow, MotionClass)>,
 ) -> (Option<TimeWindow>, String, Option<f64>) {
     let Some(last) = rec.samples.last() else {
         return (None, "no steps".into(), None);
@@ -99,19 +145,31 @@ fn developed(
                 None,
             )
         }
-        Case::Pinned { .. } | Case::Free { .. } => {
-            let turns = count_turns(&rec.samples, rec.t_release);
-            let established = turns.completed.first().copied();
-            let w = match (established, turns.completed.last()) {
-                (Some(a), Some(&b)) if b > a => Some(TimeWindow { t0: a, t1: b }),
-                _ => None,
-            };
-            (
-                w,
-                "whole turns after the first complete turn following release".into(),
-                established,
-            )
+        Case::Pinned { .. } | Case::Free { .. } => coupled_window(rec, motion),
+    }
+}
+
+/// The developed window of a coupled run (see [`developed`]).
+fn coupled_window(
+    rec: &RunRecord,
+    motion: Option<&(TimeWindow, MotionClass)>,
+) -> (Option<TimeWindow>, String, Option<f64>) {
+    let turns = count_turns(&rec.samples, rec.t_release);
+    let established = turns.completed.first().copied();
+    if let (Some(a), Some(&b)) = (established, turns.completed.last()) {
+        if b > a {
+            let rule = "whole turns after the first complete turn following release";
+            return (Some(TimeWindow { t0: a, t1: b }), rule.into(), established);
         }
+    }
+    match motion {
+        Some((w, class)) => {
+            let w = class.period.map_or(*w, |p| whole_periods(*w, p));
+            let rule =
+                "second half after release, whole periods of the motion (no two whole turns)";
+            (Some(w), rule.into(), established)
+        }
+        None => (None, "no motion after release".into(), established),
     }
 }
 
@@ -149,6 +207,99 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
     (!lags.is_empty()).then(|| lags.iter().sum::<f64>() / lags.len() as f64)
 }
 
+/// The coefficient keys over the developed window `w` (Strouhal numbers for the static case).
+fn set_coefficients(
+    sum: &mut Summary,
+    config: &RunConfig,
+    s: &[StepSample],
+    w: Option<TimeWindow>,
+    freq: Option<f64>,
+) {
+    let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
+    let cl_range = w.and_then(|w| range_over(s, w, |x| x.cl));
+    (sum.mean_cl, sum.mean_cd, sum.mean_cm) = (mean(|x| x.cl), mean(|x| x.cd), mean(|x| x.cm));
+    (sum.min_cl, sum.max_cl) = (cl_range.map(|r| r.0), cl_range.map(|r| r.1));
+    sum.max_cd = w.and_then(|w| range_over(s, w, |x| x.cd)).map(|r| r.1);
+    if let (Case::Static { alpha, .. }, Some(f)) = (&config.case, freq) {
+        (sum.strouhal_chord, sum.strouhal_width) = (Some(f), Some(f * alpha.sin().abs()));
+    }
+}
+
+/// The keys of a moving plate (forced, pinned, free) over the developed window `w`.
+fn set_motion(sum: &mut Summary, config: &RunConfig, rec: &RunRecord, w: Option<TimeWindow>) {
+    let s = &rec.samples;
+    let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
+    if config.case.is_coupled() {
+        sum.mean_speed = mean(|x| x.speed);
+        sum.mean_gamma = mean(|x| x.gamma);
+        sum.autorotation_rule = Some(
+            "time of the first complete net turn after release (counted from any reversal)".into(),
+        );
+    }
+    sum.mean_omega = mean(|x| x.omega);
+    sum.revolutions = Some(count_turns(s, rec.t_release).revolutions);
+    sum.lag_cd_behind_cl = w.and_then(|w| lag_cd_behind_cl(s, w));
+    sum.peak_cl_rotation = match (sum.mean_omega, sum.min_cl, sum.max_cl) {
+        (Some(om), Some(lo), Some(hi)) => Some(if om >= 0.0 { hi } else { -lo }),
+        _ => None,
+    };
+}
+
+/// The regime window and its classification (coupled runs).
+fn motion_of(config: &RunConfig, rec: &RunRecord) -> Option<(TimeWindow, MotionClass)> {
+    if !config.case.is_coupled() {
+        return None;
+    }
+    let w = regime_window(&rec.samples, rec.t_release)?;
+    Some((w, classify(&rec.samples, w)))
+}
+
+/// The falling-plate keys over the developed window `w`.
+fn fall_keys(
+    s: &[StepSample],
+    w: Option<TimeWindow>,
+    motion: Option<&(TimeWindow, MotionClass)>,
+) -> FallKeys {
+    let Some((rw, class)) = motion else {
+        return FallKeys::default();
+    };
+    let descent = w.and_then(|w| mean_over(s, w, |x| -x.ydot));
+    let drift = w.and_then(|w| mean_over(s, w, |x| x.xdot));
+    FallKeys {
+        regime: Some(class.regime.name().into()),
+        regime_rule: Some(
+            "second half after release: steady if |θ − mid| ≤ 0.02 rad; runs of θ between \
+             reversals of 0.1 rad counted as full turns; turns of both signs chaotic; one sign \
+             tumbling, none fluttering, if the half-turn / oscillation durations vary by at most \
+             25 % (coefficient of variation) over at least 2, else chaotic (undetermined if fewer)"
+                .into(),
+        ),
+        regime_from: Some(rw.t0),
+        mean_descent_speed: descent,
+        mean_horizontal_speed: drift,
+        descent_angle: descent.zip(drift).map(|(d, h)| d.atan2(h.abs())),
+        period: class.period,
+        angle_amplitude: class.amplitude,
+    }
+}
+
+/// The physical-unit keys (plates with physical scales).
+fn physical_keys(units: Option<&Units>, mean_speed: Option<f64>, fall: &FallKeys) -> PhysicalKeys {
+    let Some(u) = units else {
+        return PhysicalKeys::default();
+    };
+    let period_s = fall.period.map(|p| u.time_s(p));
+    PhysicalKeys {
+        velocity_scale_m_s: Some(u.scales.speed_m_s),
+        chord_m: Some(u.scales.chord_m),
+        mean_speed_cm_s: mean_speed.map(|v| u.speed_cm_s(v)),
+        mean_descent_speed_cm_s: fall.mean_descent_speed.map(|v| u.speed_cm_s(v)),
+        mean_horizontal_speed_cm_s: fall.mean_horizontal_speed.map(|v| u.speed_cm_s(v)),
+        period_s,
+        frequency_hz: period_s.map(|p| 1.0 / p),
+    }
+}
+
 /// The summary of a run; `wall_seconds` is measured by the caller (the solver reads no clock).
 pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summary {
     let s = &rec.samples;
@@ -161,20 +312,9 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         Case::Static { .. } => dominant_frequency(s, provisional, STEADY_BAND, |x| x.cl),
         _ => None,
     };
-    let (w, rule, established) = developed(config, rec, freq);
-    let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
-    let cl_range = w.and_then(|w| range_over(s, w, |x| x.cl));
-    let cd_range = w.and_then(|w| range_over(s, w, |x| x.cd));
-    let coupled = config.case.is_coupled();
-    let moving = !matches!(config.case, Case::Static { .. });
-    let (strouhal_chord, strouhal_width) = match (config.case.clone(), freq) {
-        (Case::Static { alpha, .. }, Some(f)) => (Some(f), Some(f * alpha.sin().abs())),
-        _ => (None, None),
-    };
-    let mean_speed = if coupled { mean(|x| x.speed) } else { None };
-    let mean_omega = if moving { mean(|x| x.omega) } else { None };
-    let physical = physical(config);
-    Summary {
+    let motion = motion_of(config, rec);
+    let (w, rule, established) = developed(config, rec, freq, motion.as_ref());
+    let mut sum = Summary {
         case: config.case.name().into(),
         status: rec.status.name().into(),
         re: config.flow.re,
@@ -186,38 +326,19 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         developed_from: w.map(|w| w.t0),
         developed_to: w.map(|w| w.t1),
         developed_rule: rule,
-        mean_cl: mean(|x| x.cl),
-        mean_cd: mean(|x| x.cd),
-        mean_cm: mean(|x| x.cm),
-        max_cl: cl_range.map(|r| r.1),
-        min_cl: cl_range.map(|r| r.0),
-        max_cd: cd_range.map(|r| r.1),
-        strouhal_chord,
-        strouhal_width,
-        mean_speed,
-        mean_omega,
-        mean_gamma: if coupled { mean(|x| x.gamma) } else { None },
-        revolutions: moving.then(|| count_turns(s, rec.t_release).revolutions),
         autorotation_time: established,
-        autorotation_rule: coupled.then(|| {
-            "time of the first complete net turn after release (counted from any reversal)".into()
-        }),
-        lag_cd_behind_cl: if moving {
-            w.and_then(|w| lag_cd_behind_cl(s, w))
-        } else {
-            None
-        },
-        peak_cl_rotation: match (moving, mean_omega, cl_range) {
-            (true, Some(om), Some((lo, hi))) => Some(if om >= 0.0 { hi } else { -lo }),
-            _ => None,
-        },
-        mean_speed_ft_s: physical
-            .as_ref()
-            .and_then(|p| mean_speed.map(|v| p.speed_to_ft_s(v))),
-        mean_omega_rad_s: physical
-            .as_ref()
-            .and_then(|p| mean_omega.map(|v| p.rate_to_rad_s(v.abs()))),
+        ..Summary::default()
+    };
+    set_coefficients(&mut sum, config, s, w, freq);
+    if !matches!(config.case, Case::Static { .. }) {
+        set_motion(&mut sum, config, rec, w);
     }
+    sum.fall = fall_keys(s, w, motion.as_ref());
+    let units = Units::of(config);
+    sum.mean_speed_ft_s = physical(config).and_then(|p| sum.mean_speed.map(|v| p.speed_to_ft_s(v)));
+    sum.mean_omega_rad_s = units.and_then(|u| sum.mean_omega.map(|v| u.rate_rad_s(v.abs())));
+    sum.physical = physical_keys(units.as_ref(), sum.mean_speed, &sum.fall);
+    sum
 }
 
 #[cfg(test)]

@@ -1,7 +1,10 @@
 //! The coupled time loop (SPEC §6 "Coupling"): each step the flow gives the loads for the current
 //! motion, the rigid-body step gives the next motion, and that motion sets the flow's boundary for
-//! the next flow step. Prescribed cases (and the development phase before a release) take the
-//! motion from their formula instead ([`Case::prescribed_state`]).
+//! the next flow step. With strong coupling (the default) the body step takes the loads without
+//! the flow's instantaneous answer to the last change of motion and solves its equations with the
+//! added mass implicit ([`StrongCoupling`]); with explicit coupling it takes the loads as they are.
+//! Prescribed cases (and the development phase before a release) take the motion from their
+//! formula instead ([`Case::prescribed_state`]).
 //!
 //! The physics core: no I/O and no clock. Results go to an [`Observer`], step by step.
 //!
@@ -24,12 +27,14 @@ pub mod timestep;
 
 pub use motion::Case;
 pub use output::{FieldSnapshot, RunRecord, RunStatus, StepSample};
-pub use spec::{BodyConfig, RunConfig, TimeControl};
+pub use spec::{BodyConfig, ReferenceScales, RunConfig, TimeControl};
 
-use crate::body::{wrap_angle, AbError, BodyState, Dof, InertialLoads, RigidBody};
-use crate::flow::{FlowError, FlowSolver, OuterBc};
+use crate::body::{
+    wrap_angle, AbError, BodyState, Coupling, Dof, InertialLoads, RigidBody, StrongCoupling,
+};
+use crate::flow::{AddedMass, FlowError, FlowSolver, OuterBc};
 use crate::grid::Grid;
-use crate::param::InputError;
+use crate::param::{InputError, Param};
 
 /// Receives the run as it happens.
 pub trait Observer {
@@ -55,6 +60,13 @@ pub enum SimError {
     /// The plate's motion became non-finite.
     #[error("the plate's motion is not finite at t = {t:.4}")]
     MotionNotFinite { t: f64 },
+    /// The stable time step fell to round-off of t (the motion runs away, e.g. explicit coupling
+    /// of a light plate).
+    #[error(
+        "the time step fell to {dt:.3e} at t = {t:.4}: the motion runs away (as explicit \
+         coupling of a plate lighter than its added mass does)"
+    )]
+    StepCollapsed { t: f64, dt: f64 },
 }
 
 /// The plate's motion law at run time.
@@ -66,6 +78,8 @@ enum Motion {
         body: Box<RigidBody>,
         dof: Dof,
         released: bool,
+        /// The added-mass-implicit body equations (strong coupling); `None` for explicit coupling.
+        strong: Option<Box<StrongCoupling>>,
     },
 }
 
@@ -86,7 +100,8 @@ impl Simulation {
         config.validate()?;
         let grid = Grid::new(&config.grid)?;
         let state = config.case.prescribed_state(0.0);
-        let flow = FlowSolver::new(grid, config.flow.clone(), OuterBc::FarField, state.frame())?;
+        let mut flow =
+            FlowSolver::new(grid, config.flow.clone(), OuterBc::FarField, state.frame())?;
         let motion = match &config.case {
             Case::Static { .. } | Case::Forced { .. } => Motion::Prescribed,
             Case::Pinned { .. } | Case::Free { .. } => {
@@ -97,10 +112,15 @@ impl Simulation {
                     Dof::Free
                 };
                 let body = RigidBody::new(b.props, Dof::Prescribed, state, b.ab_order, b.ab_start)?;
+                let strong = match b.coupling {
+                    Coupling::Explicit => None,
+                    Coupling::Strong => Some(Box::new(strong_coupling(b, &mut flow)?)),
+                };
                 Motion::Coupled {
                     body: Box::new(body),
                     dof,
                     released: false,
+                    strong,
                 }
             }
         };
@@ -111,6 +131,16 @@ impl Simulation {
             motion,
             theta_release: None,
         })
+    }
+
+    /// The flow's added-mass matrix K when the run uses strong coupling.
+    pub fn added_mass(&self) -> Option<AddedMass> {
+        match &self.motion {
+            Motion::Coupled {
+                strong: Some(s), ..
+            } => Some(s.added),
+            _ => None,
+        }
     }
 
     /// The release time (coupled), end of spin-up (forced) or 0.
@@ -170,6 +200,9 @@ impl Simulation {
             self.release_time(),
             &self.config.time,
         );
+        if dt <= 64.0 * f64::EPSILON * t.abs().max(1.0) {
+            return Err(SimError::StepCollapsed { t, dt });
+        }
         let next = self.next_state(t, dt);
         if !(next.x.is_finite()
             && next.y.is_finite()
@@ -197,6 +230,7 @@ impl Simulation {
             body,
             dof,
             released,
+            strong,
         } = &mut self.motion
         else {
             return self.config.case.prescribed_state(t + dt);
@@ -209,9 +243,20 @@ impl Simulation {
         if !*released {
             return self.config.case.prescribed_state(t + dt);
         }
-        let l = self.flow.loads();
-        let loads = InertialLoads::from_body_axes(self.state.theta, l.fx, l.fy, l.moment);
-        body.step(t, &loads, dt);
+        let (flow, l) = (&self.flow, self.flow.loads());
+        match strong {
+            Some(sc) => {
+                let rest = sc
+                    .added
+                    .rest(&l, &flow.frame, &flow.frame_prev, flow.dt_prev);
+                let f = sc.derivative(&body.props, *dof, &body.state, rest, dt);
+                body.step_with(t, f, dt);
+            }
+            None => {
+                let loads = InertialLoads::from_body_axes(self.state.theta, l.fx, l.fy, l.moment);
+                body.step(t, &loads, dt);
+            }
+        }
         body.state
     }
 
@@ -254,4 +299,17 @@ impl Simulation {
             cells: self.flow.grid.cells(),
         }
     }
+}
+
+/// The strong coupling of a plate: the flow's added-mass matrix (three projections) and the body's
+/// equations with it on the left-hand side.
+fn strong_coupling(b: &BodyConfig, flow: &mut FlowSolver) -> Result<StrongCoupling, SimError> {
+    let added = flow.added_mass();
+    StrongCoupling::new(&b.props, added).ok_or_else(|| {
+        SimError::Input(InputError::Inconsistent {
+            param: Param::Mass,
+            value: b.props.mass,
+            why: "the plate's mass plus the flow's added mass is singular".into(),
+        })
+    })
 }

@@ -18,8 +18,14 @@ pub enum Case {
     /// B: translates at U; θ spun up from 0 at constant angular acceleration over `spinup` convective
     /// times to the rate θ̇ = `omega`, then held.
     Forced { omega: f64, spinup: f64 },
-    /// C: translates at U, free to rotate about its centre; held at α₀ for `develop`, then released.
-    Pinned { alpha0: f64, develop: f64 },
+    /// C: translates at `speed` (U = 1, the wind tunnel; 0: a pin in still fluid), free to rotate
+    /// about its centre; held at α₀ for `develop`, then released.
+    Pinned {
+        alpha0: f64,
+        develop: f64,
+        #[serde(default = "unit_speed")]
+        speed: f64,
+    },
     /// D: moves at V₀ along γ₀ at α₀ for `develop`, then falls freely (3 DOF, gravity).
     Free {
         v0: f64,
@@ -56,7 +62,7 @@ impl Case {
     /// The prescribed motion at time t: cases A and B, and the development phase of C and D.
     ///
     /// A: X = t, θ = α (+ the start-up kick ε sin²(πt) for t < 1). B: X = t, θ̈ = θ̇/T_s for
-    /// t < T_s, then θ̇ held. C: X = t, θ = α₀. D: moving at V₀ along γ₀ with θ = γ₀ + α₀.
+    /// t < T_s, then θ̇ held. C: X = V t, θ = α₀. D: moving at V₀ along γ₀ with θ = γ₀ + α₀.
     pub fn prescribed_state(&self, t: f64) -> BodyState {
         let translate = |v: f64, gamma: f64, theta: f64, omega: f64| BodyState {
             x: v * gamma.cos() * t,
@@ -84,10 +90,15 @@ impl Case {
                 };
                 translate(1.0, 0.0, theta, rate)
             }
-            Case::Pinned { alpha0, .. } => translate(1.0, 0.0, alpha0, 0.0),
+            Case::Pinned { alpha0, speed, .. } => translate(speed, 0.0, alpha0, 0.0),
             Case::Free {
                 v0, gamma0, alpha0, ..
             } => translate(v0, gamma0, gamma0 + alpha0, 0.0),
         }
     }
+}
+
+/// The wind-tunnel speed of a pinned plate when a description does not give one.
+fn unit_speed() -> f64 {
+    1.0
 }

@@ -5,20 +5,37 @@ use std::f64::consts::PI;
 use serde::{Deserialize, Serialize};
 
 use super::motion::Case;
-use crate::body::{coupling_check, AbStart, PlateProps};
+use crate::body::{AbStart, Coupling, PlateProps};
 use crate::flow::FlowParams;
 use crate::grid::GridSpec;
 use crate::param::{check_range, check_whole, InputError, Param};
 
+/// The physical scales behind a run's units (SPEC §2): the chord c and the velocity scale U in SI
+/// units. Reports use them to give results in physical units; the solver never reads them.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ReferenceScales {
+    /// c (m).
+    pub chord_m: f64,
+    /// U (m/s).
+    pub speed_m_s: f64,
+}
+
 /// The plate's inertia and gravity (coupled cases), with where they came from.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BodyConfig {
-    /// "card" when the values come from the seed's card preset (possibly overridden).
+    /// "card" when the values come from the seed's card preset (possibly overridden); a short
+    /// description of a physically described plate otherwise.
     pub preset: Option<String>,
+    /// The physical chord and velocity scale, when the plate has them.
+    #[serde(default)]
+    pub scales: Option<ReferenceScales>,
     pub props: PlateProps,
     /// Adams–Bashforth order (1..=6) and start procedure (SPEC §6).
     pub ab_order: usize,
     pub ab_start: AbStart,
+    /// How the flow's loads enter the body's equations (SPEC §6; default strong).
+    #[serde(default)]
+    pub coupling: Coupling,
 }
 
 /// When a run ends and how its time step is bounded (SPEC §6 "Time step").
@@ -88,9 +105,10 @@ impl RunConfig {
             let b = self.body.as_ref().ok_or(InputError::MissingPlate)?;
             check_range(Param::Mass, b.props.mass, 0.0, 1e6, true)?;
             check_range(Param::Inertia, b.props.inertia, 0.0, 1e6, true)?;
-            check_range(Param::Gravity, b.props.gravity, 0.0, 1e3, false)?;
+            check_range(Param::Gravity, b.props.gravity, 0.0, 1e9, false)?;
+            check_range(Param::DisplacedMass, b.props.displaced, 0.0, 1e6, false)?;
+            check_range(Param::Torque, b.props.torque, -1e3, 1e3, false)?;
             check_whole(Param::AbOrder, b.ab_order, 1, 6)?;
-            coupling_check(&b.props)?;
         }
         Ok(())
     }
@@ -105,9 +123,14 @@ impl RunConfig {
                 check_range(Param::ForcedOmega, omega.abs(), 0.0, 20.0, true)?;
                 check_range(Param::Spinup, spinup, 0.0, 1e3, false)
             }
-            Case::Pinned { alpha0, develop } => {
+            Case::Pinned {
+                alpha0,
+                develop,
+                speed,
+            } => {
                 check_range(Param::Alpha0, alpha0, -PI, PI, false)?;
-                check_range(Param::Develop, develop, 0.0, 1e3, false)
+                check_range(Param::Develop, develop, 0.0, 1e3, false)?;
+                check_range(Param::V0, speed, 0.0, 10.0, false)
             }
             Case::Free {
                 v0,
@@ -143,7 +166,10 @@ impl RunConfig {
             .body
             .as_ref()
             .and_then(|b| b.preset.as_deref())
-            .map(|p| format!(", {p} preset"))
+            .map(|p| match p {
+                "card" => ", card preset".to_string(),
+                other => format!(", {other}"),
+            })
             .unwrap_or_default();
         format!(
             "{case}{preset}, Re {:.0}, N = {}",

@@ -1,0 +1,122 @@
+//! The discrete flow's instantaneous pressure response to a change of the plate's motion (SPEC §6,
+//! "coupling that treats the added-mass part of the fluid force implicitly").
+//!
+//! One step t → t + Δt predicts u* = uⁿ + Δt·H and sets the plate faces to g(qⁿ⁺¹), with
+//! q = (u0, v0, θ̇) the plate's motion in body axes ([`Frame`]). Because uⁿ was divergence-free
+//! with its plate faces at g(qⁿ), the divergence of u* is the fluid-face part Δt·∇·H plus the
+//! plate-face part, which is linear in Δq = qⁿ⁺¹ − qⁿ. The projection is linear too, so
+//! φ = φ_H + Σₖ Δqₖ φₖ with φₖ the potential of a unit change of motion k, and the pressure loads
+//! (p = φ/Δt) are F = F_H + K·Δq/Δt. K is a constant 3 × 3 matrix of the discrete operator (rows
+//! F_x, F_y, M in body axes; columns u0, v0, θ̇): the negative of the discrete plate's added-mass
+//! tensor (potential flow: π/4 normal, ≈ 0 along a thin plate, π/128 in pitch). It is computed once
+//! with the factored pressure matrix (three projections).
+//!
+//! The viscous shear on the plate, μ(u − g)/d from the first fluid velocity, also answers a change
+//! of motion at once: through g(qⁿ⁺¹) and through the projection's near-wall velocity −∇φ. Per unit
+//! change of velocity (not divided by Δt) that answer is the matrix S, of order 4μ/h along the
+//! plate. It is a damping force, which an explicit body step integrates stably only while
+//! Δt·|S|/(m + m_added) < 1 — violated by very light plates at low Re.
+use super::array::Padded;
+use super::frame::Frame;
+use super::plate::{self, BodyAxesLoads};
+use super::FlowSolver;
+
+/// K and S of the module docs: `k[row][col]`, rows (F_x, F_y, M) in body axes on ρU²c and ρU²c²,
+/// columns the unit changes of (u0, v0, θ̇) over a unit step; `shear[row][col]` likewise per unit
+/// change of (u0, v0, θ̇), at the run's Reynolds number.
+#[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize, serde::Deserialize)]
+pub struct AddedMass {
+    pub k: [[f64; 3]; 3],
+    pub shear: [[f64; 3]; 3],
+}
+
+/// The three unit motions (u0, v0, θ̇) whose responses are the columns of K.
+const UNIT_MOTIONS: [Frame; 3] = [
+    Frame {
+        u0: 1.0,
+        v0: 0.0,
+        omega: 0.0,
+    },
+    Frame {
+        u0: 0.0,
+        v0: 1.0,
+        omega: 0.0,
+    },
+    Frame {
+        u0: 0.0,
+        v0: 0.0,
+        omega: 1.0,
+    },
+];
+
+impl AddedMass {
+    /// K·x.
+    pub fn apply(&self, x: [f64; 3]) -> [f64; 3] {
+        let k = &self.k;
+        [0, 1, 2].map(|r| k[r][0] * x[0] + k[r][1] * x[1] + k[r][2] * x[2])
+    }
+
+    /// The part of the loads that is the flow's instantaneous answer to the last change of motion,
+    /// K·(qⁿ − qⁿ⁻¹)/Δtⁿ⁻¹ ((F_x, F_y, M) in body axes); zero before the first step (`dt` = 0).
+    pub fn instantaneous(&self, now: &Frame, before: &Frame, dt: f64) -> [f64; 3] {
+        if dt <= 0.0 {
+            return [0.0; 3];
+        }
+        let dq = [
+            (now.u0 - before.u0) / dt,
+            (now.v0 - before.v0) / dt,
+            (now.omega - before.omega) / dt,
+        ];
+        self.apply(dq)
+    }
+
+    /// The loads without their instantaneous part: F − K·Δq/Δt (body axes).
+    pub fn rest(&self, loads: &BodyAxesLoads, now: &Frame, before: &Frame, dt: f64) -> [f64; 3] {
+        let inst = self.instantaneous(now, before, dt);
+        [
+            loads.fx - inst[0],
+            loads.fy - inst[1],
+            loads.moment - inst[2],
+        ]
+    }
+}
+
+impl FlowSolver {
+    /// K and S of the module docs, from three projections of the unit plate motions with the
+    /// factored pressure matrix (set-up cost only; allocates its own scratch fields and leaves the
+    /// flow untouched).
+    pub fn added_mass(&mut self) -> AddedMass {
+        let (mut k, mut shear) = ([[0.0; 3]; 3], [[0.0; 3]; 3]);
+        let re = self.params.re;
+        for (col, unit) in UNIT_MOTIONS.iter().enumerate() {
+            let (pressure, all) = self.unit_response(unit, re);
+            let rows = [
+                (pressure.fx, all.fx),
+                (pressure.fy, all.fy),
+                (pressure.moment, all.moment),
+            ];
+            for (row, (p, a)) in rows.into_iter().enumerate() {
+                k[row][col] = p;
+                shear[row][col] = a - p;
+            }
+        }
+        AddedMass { k, shear }
+    }
+
+    /// The loads of one unit change of motion over a unit step, from fluid at rest: plate faces at
+    /// g(unit), projected, p = φ. Returns (pressure alone, pressure and shear at `re`).
+    fn unit_response(&mut self, unit: &Frame, re: f64) -> (BodyAxesLoads, BodyAxesLoads) {
+        let (nx, ny) = (self.grid.nx, self.grid.ny);
+        let mut u = Padded::zeros(nx + 1, ny);
+        let mut v = Padded::zeros(nx, ny + 1);
+        let mut p = vec![0.0; nx * ny];
+        plate::set_plate_faces(&mut u, &mut v, &self.grid, &self.metrics, unit);
+        self.pressure
+            .project(&mut u, &mut v, &self.grid, &self.metrics, 1.0, &mut p);
+        let (g, m) = (&self.grid, &self.metrics);
+        (
+            plate::loads(&u, &v, &p, g, m, unit, f64::INFINITY),
+            plate::loads(&u, &v, &p, g, m, unit, re),
+        )
+    }
+}
