@@ -30,7 +30,7 @@ pub struct SolverArgs {
     pub summary: Option<PathBuf>,
     /// Use the seed's exact grid (N = 16, 24 × 27 stretched intervals over 10 chords); overrides
     /// --resolution, --extent and --growth.
-    #[arg(long)]
+    #[arg(long, conflicts_with_all = ["thickness", "extent", "growth"])]
     pub seed_grid: bool,
     /// Plate thickness as a chord fraction, rounded to whole cells [default: one cell, 1/N, the
     /// thinnest plate the grid holds; a real card is about 1/100 of its chord]. Plates two or more
@@ -54,6 +54,8 @@ pub struct SolverArgs {
     /// The seed's rotation rule Δt·|θ̇| ≤ CC.
     #[arg(long, default_value_t = 0.005, allow_negative_numbers = true)]
     pub cc: f64,
+    #[command(flatten)]
+    pub limits: super::limits::LimitArgs,
 }
 
 #[derive(Args, Debug)]

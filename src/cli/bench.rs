@@ -1,8 +1,8 @@
 //! `platefall bench`: the flow step's cost per cell on several grids (see [`crate::bench`]).
 use super::args::BenchArgs;
-use super::run::write_atomically;
 use crate::bench::{bench_one, table};
 use crate::record::files::check_writable;
+use crate::record::output::write_atomically;
 
 /// Runs the benchmark and prints its table (and writes --json).
 pub fn run_bench(args: &BenchArgs) -> anyhow::Result<()> {
@@ -25,7 +25,7 @@ pub fn run_bench(args: &BenchArgs) -> anyhow::Result<()> {
     }
     print!("{}", table(&rows));
     if let Some(p) = &args.json {
-        write_atomically(p, serde_json::to_string_pretty(&rows)?.as_bytes())?;
+        write_atomically("--json", p, serde_json::to_string_pretty(&rows)?.as_bytes())?;
     }
     Ok(())
 }

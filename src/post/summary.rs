@@ -4,11 +4,9 @@ use std::f64::consts::PI;
 
 use serde::Serialize;
 
-use super::analysis::{
-    count_turns, dominant_frequency, mean_over, range_over, whole_periods, TimeWindow,
-};
+use super::analysis::{count_turns, dominant_frequency, whole_periods, TimeWindow};
 use crate::config::physical;
-use crate::sim::{Case, RunConfig, RunRecord, StepSample};
+use crate::sim::{Case, Quantity, RunConfig, RunRecord, StepSample};
 
 /// Peak-to-peak C_L below which the flow counts as steady (no Strouhal number).
 pub const STEADY_BAND: f64 = 0.02;
@@ -150,8 +148,14 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
 }
 
 /// The summary of a run; `wall_seconds` is measured by the caller (the solver reads no clock).
+///
+/// Means and extremes come from the bounded history's exact running integrals and per-step
+/// extremes (`History::mean`, `History::range`): exact over every step of the developed window
+/// between its first and last retained samples. Turns, the spectrum and the lag read the retained
+/// samples (`&rec.samples` is a `&[StepSample]`).
 pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summary {
-    let s = &rec.samples;
+    let h = &rec.samples;
+    let s: &[StepSample] = h;
     let last_t = s.last().map(|x| x.t).unwrap_or(0.0);
     let provisional = TimeWindow {
         t0: 0.5 * last_t,
@@ -162,17 +166,17 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         _ => None,
     };
     let (w, rule, established) = developed(config, rec, freq);
-    let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
-    let cl_range = w.and_then(|w| range_over(s, w, |x| x.cl));
-    let cd_range = w.and_then(|w| range_over(s, w, |x| x.cd));
+    let mean = |q: Quantity| w.and_then(|w| h.mean(q, w.t0, w.t1));
+    let cl_range = w.and_then(|w| h.range(Quantity::Cl, w.t0, w.t1));
+    let cd_range = w.and_then(|w| h.range(Quantity::Cd, w.t0, w.t1));
     let coupled = config.case.is_coupled();
     let moving = !matches!(config.case, Case::Static { .. });
     let (strouhal_chord, strouhal_width) = match (config.case.clone(), freq) {
         (Case::Static { alpha, .. }, Some(f)) => (Some(f), Some(f * alpha.sin().abs())),
         _ => (None, None),
     };
-    let mean_speed = if coupled { mean(|x| x.speed) } else { None };
-    let mean_omega = if moving { mean(|x| x.omega) } else { None };
+    let mean_speed = if coupled { mean(Quantity::Speed) } else { None };
+    let mean_omega = if moving { mean(Quantity::Omega) } else { None };
     let physical = physical(config);
     Summary {
         case: config.case.name().into(),
@@ -180,15 +184,15 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         re: config.flow.re,
         resolution: config.grid.resolution,
         cells: rec.cells,
-        steps: s.len() as u64,
+        steps: h.total_steps(),
         t_end: last_t,
         wall_seconds,
         developed_from: w.map(|w| w.t0),
         developed_to: w.map(|w| w.t1),
         developed_rule: rule,
-        mean_cl: mean(|x| x.cl),
-        mean_cd: mean(|x| x.cd),
-        mean_cm: mean(|x| x.cm),
+        mean_cl: mean(Quantity::Cl),
+        mean_cd: mean(Quantity::Cd),
+        mean_cm: mean(Quantity::Cm),
         max_cl: cl_range.map(|r| r.1),
         min_cl: cl_range.map(|r| r.0),
         max_cd: cd_range.map(|r| r.1),
@@ -196,7 +200,7 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         strouhal_width,
         mean_speed,
         mean_omega,
-        mean_gamma: if coupled { mean(|x| x.gamma) } else { None },
+        mean_gamma: if coupled { mean(Quantity::Gamma) } else { None },
         revolutions: moving.then(|| count_turns(s, rec.t_release).revolutions),
         autorotation_time: established,
         autorotation_rule: coupled.then(|| {

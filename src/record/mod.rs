@@ -106,9 +106,11 @@
 //!   `--t-end` / `--turns`, since the per-step series dominate.
 pub mod csv;
 pub mod files;
+pub mod inject;
 pub mod logger;
 pub mod messages;
 pub mod options;
+pub mod output;
 mod progress;
 #[cfg(feature = "viewer")]
 pub mod viewer;
@@ -116,7 +118,7 @@ pub mod viewer;
 #[path = "viewer_off.rs"]
 pub mod viewer;
 
-pub use csv::CSV_HEADER;
+pub use csv::{CSV_HEADER, CSV_TRAILER};
 pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
