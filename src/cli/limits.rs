@@ -71,11 +71,11 @@ fn check_memory(
     let need = est.memory_bytes(recording);
     let (limit, shown) = memory_limit(&limits.max_memory)?;
     let what = format!(
-        "{}: the grid has {} x {} = {:.3e} cells and its pressure factor ≈ {:.2e} nonzeros",
+        "{}: the grid has {} x {} = {} cells and its pressure factor ≈ {:.2e} nonzeros",
         grid_flags(config),
         est.nx,
         est.ny,
-        est.cells as f64,
+        est.cells,
         est.factor_nonzeros
     );
     let cure = "reduce --resolution or --extent, or raise --growth";
@@ -106,16 +106,16 @@ fn check_steps(config: &RunConfig, est: &Estimate, limits: &LimitArgs) -> anyhow
     }
     let (flag, cure) = match est.dt_floor_from {
         DtFloor::Viscous => (
-            format!("--re {}", config.flow.re),
+            format!("--re {}", show(config.flow.re)),
             "raise --re, shorten --t-end or coarsen --resolution",
         ),
         DtFloor::Ceiling => (
-            format!("--dt-max {}", config.time.dt_max),
+            format!("--dt-max {}", show(config.time.dt_max)),
             "raise --dt-max or shorten --t-end",
         ),
     };
     anyhow::bail!(
-        "{flag}: {} to reach --t-end {} takes at least {:.3e} steps; accepted: up to --max-steps {:.0e}; {cure}, or raise --max-steps",
+        "{flag}: with {} reaching --t-end {} takes at least {:.3e} steps; accepted: up to --max-steps {:.0e}; {cure}, or raise --max-steps",
         floor_reason(config, est),
         config.time.t_end,
         est.steps_min,
@@ -128,9 +128,19 @@ fn floor_reason(config: &RunConfig, est: &Estimate) -> String {
     match est.dt_floor_from {
         DtFloor::Viscous => format!(
             "Δt ≤ {:.3e} from the explicit viscous limit at Re {}",
-            est.dt_floor, config.flow.re
+            est.dt_floor,
+            show(config.flow.re)
         ),
-        DtFloor::Ceiling => format!("Δt ≤ {} from --dt-max", est.dt_floor),
+        DtFloor::Ceiling => format!("Δt ≤ {} from --dt-max", show(est.dt_floor)),
+    }
+}
+
+/// A number as typed: plain, or in exponent form when very small or large.
+fn show(x: f64) -> String {
+    if x != 0.0 && !(1e-4..1e7).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
     }
 }
 

@@ -155,11 +155,13 @@ mod tests {
         let _ = std::fs::remove_dir_all(&d);
         std::fs::create_dir_all(d.join("sub")).unwrap();
         let a = d.join("a.rrd");
-        let out = |flag, path| OutputPath {
-            flag,
-            path,
-            create_dir: false,
-        };
+        fn out<'a>(flag: &'static str, path: &'a Path) -> OutputPath<'a> {
+            OutputPath {
+                flag,
+                path,
+                create_dir: false,
+            }
+        }
         let dotted = d.join("sub/../a.rrd");
         let e = check_outputs(&[out("--save", &a), out("--summary", &dotted)]).unwrap_err();
         assert_eq!(e.flag, "--summary");

@@ -229,12 +229,13 @@ impl Logger {
     /// Fails if an output could not be written (stop the run then: nothing more can be kept) or
     /// if the logger thread has stopped.
     pub fn step(&self, sample: StepSample) -> anyhow::Result<()> {
-        if let Some(why) = self.output_failure() {
-            anyhow::bail!("{why}");
-        }
         let tx = self.tx.as_ref().context("the logger has finished")?;
         tx.send(Message::Step(sample))
-            .map_err(|_| anyhow::anyhow!("the logger thread stopped unexpectedly"))
+            .map_err(|_| anyhow::anyhow!("the logger thread stopped unexpectedly"))?;
+        match self.output_failure() {
+            Some(why) => anyhow::bail!("{why}"),
+            None => Ok(()),
+        }
     }
 
     /// Offers a field snapshot without blocking. Returns false (and counts it as skipped) when
@@ -456,6 +457,12 @@ impl LoggerThread {
             }
             None => None,
         };
+        let mut errors: Vec<String> = Vec::new();
+        for e in self.errors.drain(..) {
+            if !errors.contains(&e) {
+                errors.push(e); // an output that failed mid-run fails its commit the same way
+            }
+        }
         let (rrd, connect, server, notes) = match viewer {
             Some(v) => (v.rrd, v.connect, v.server, v.notes),
             None => (None, None, None, Vec::new()),
@@ -469,7 +476,7 @@ impl LoggerThread {
             serve_url: self.serve_url,
             connect,
             notes,
-            errors: self.errors,
+            errors,
             server,
         })
     }

@@ -266,6 +266,15 @@ impl History {
     }
 }
 
+impl<'a> IntoIterator for &'a History {
+    type Item = &'a StepSample;
+    type IntoIter = std::slice::Iter<'a, StepSample>;
+    /// The retained samples, as for a `Vec<StepSample>`.
+    fn into_iter(self) -> Self::IntoIter {
+        self.samples.iter()
+    }
+}
+
 impl FromIterator<StepSample> for History {
     /// A history of the default capacity holding `iter`'s samples.
     fn from_iter<I: IntoIterator<Item = StepSample>>(iter: I) -> Self {
