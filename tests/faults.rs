@@ -12,10 +12,20 @@ use std::time::Duration;
 
 use faults_common::*;
 
-/// `base` followed by the three outputs in `dir`.
-fn with_outputs(mut base: Vec<String>, dir: &std::path::Path) -> Vec<String> {
-    base.extend(outputs(dir));
-    base
+/// A long static run writing its three outputs in a fresh `name` directory, with `env`, once it
+/// has written a first part of its recording.
+fn start_running(name: &str, env: &[(&str, &str)]) -> (std::path::PathBuf, std::process::Child) {
+    let dir = scratch(name);
+    let child = start(&with_outputs(static_args("1000"), &dir), env, &dir);
+    assert!(wait_for(Duration::from_secs(60), || running(&dir)));
+    (dir, child)
+}
+
+/// No output of `dir` is at its final name.
+fn assert_none_at_final_names(dir: &std::path::Path) {
+    for f in ["a.rrd", "a.csv", "a.json"] {
+        assert!(!dir.join(f).exists(), "{f} at its final name");
+    }
 }
 
 #[test]
@@ -213,23 +223,8 @@ fn is_root() -> bool {
 #[test]
 fn a_full_disk_mid_run_stops_the_run_with_exit_4_and_leaves_nothing_incomplete() {
     let dir = scratch("diskfull");
-    let a = with_outputs(static_args("100"), &dir);
-    let out = run(&a, &[("PLATEFALL_INJECT", "disk-full-after=1500000")]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(4), "{err}");
-    let errors = error_lines(&err);
-    assert_eq!(errors.len(), 1, "{err}");
-    assert!(
-        errors[0].contains("--save") && errors[0].contains("no space left"),
-        "{err}"
-    );
-    assert!(errors[0].contains("the run stopped at t ="), "{err}");
-    assert!(
-        !dir.join("a.rrd").exists(),
-        "a failed .rrd must not be at its final name"
-    );
-    assert_final_outputs_complete(&dir, "output_failed");
-    assert!(partial_files(&dir).is_empty(), "{:?}", partial_files(&dir));
+    let env = [("PLATEFALL_INJECT", "disk-full-after=1500000")];
+    assert_disk_full_run(&dir, &env, "no space left on device");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -254,9 +249,7 @@ fn removing_the_output_directory_mid_run_stops_the_run_with_exit_4() {
 
 #[test]
 fn ctrl_c_finalises_every_output_and_exits_130() {
-    let dir = scratch("sigint");
-    let mut child = start(&with_outputs(static_args("1000"), &dir), &[], &dir);
-    assert!(wait_for(Duration::from_secs(60), || running(&dir)));
+    let (dir, mut child) = start_running("sigint", &[]);
     signal(&child, "INT");
     let (code, _) = exit_code(&mut child, Duration::from_secs(60));
     let err = std::fs::read_to_string(dir.join("stderr")).unwrap();
@@ -273,11 +266,8 @@ fn ctrl_c_finalises_every_output_and_exits_130() {
 
 #[test]
 fn a_second_ctrl_c_quits_a_hanging_finalisation_at_once() {
-    let dir = scratch("sigint2");
     // Every commit hangs for a minute, as on a dead disk.
-    let env = [("PLATEFALL_INJECT", "commit-delay=60")];
-    let mut child = start(&with_outputs(static_args("1000"), &dir), &env, &dir);
-    assert!(wait_for(Duration::from_secs(60), || running(&dir)));
+    let (dir, mut child) = start_running("sigint2", &[("PLATEFALL_INJECT", "commit-delay=60")]);
     signal(&child, "INT");
     let stderr = dir.join("stderr");
     assert!(wait_for(Duration::from_secs(30), || {
@@ -290,9 +280,7 @@ fn a_second_ctrl_c_quits_a_hanging_finalisation_at_once() {
     assert_eq!(code, 130, "{err}");
     assert!(took < Duration::from_secs(5), "quit after {took:?}");
     assert!(err.contains("second Ctrl-C"), "{err}");
-    for f in ["a.rrd", "a.csv", "a.json"] {
-        assert!(!dir.join(f).exists(), "{f} at its final name");
-    }
+    assert_none_at_final_names(&dir);
     assert!(
         !partial_files(&dir).is_empty(),
         "the partial files stay, named so"
@@ -302,15 +290,11 @@ fn a_second_ctrl_c_quits_a_hanging_finalisation_at_once() {
 
 #[test]
 fn sigkill_leaves_only_partial_files() {
-    let dir = scratch("sigkill");
-    let mut child = start(&with_outputs(static_args("1000"), &dir), &[], &dir);
-    assert!(wait_for(Duration::from_secs(60), || running(&dir)));
+    let (dir, mut child) = start_running("sigkill", &[]);
     signal(&child, "KILL");
     let (code, _) = exit_code(&mut child, Duration::from_secs(30));
     assert_eq!(code, -1, "killed by a signal");
-    for f in ["a.rrd", "a.csv", "a.json"] {
-        assert!(!dir.join(f).exists(), "{f} at its final name");
-    }
+    assert_none_at_final_names(&dir);
     let partial = partial_files(&dir);
     assert!(
         partial.iter().any(|n| n.starts_with(".a.rrd.partial-")),

@@ -47,26 +47,14 @@ impl Drop for Mount {
 #[ignore = "needs root (mounts a 3 MB tmpfs); run by .ci/run"]
 fn a_real_full_disk_mid_run_exits_4_and_leaves_nothing_incomplete() {
     let mnt = Mount::tmpfs("tmpfs-full", "size=3m");
-    let mut a = static_args("100");
-    a.extend(outputs(mnt.path()));
-    let out = run(&a, &[]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(4), "{err}");
-    let errors = error_lines(&err);
-    assert_eq!(errors.len(), 1, "{err}");
-    assert!(errors[0].contains("No space left on device"), "{err}");
-    assert!(!mnt.path().join("a.rrd").exists(), "{err}");
-    assert_final_outputs_complete(mnt.path(), "output_failed");
-    assert!(partial_files(mnt.path()).is_empty());
+    assert_disk_full_run(mnt.path(), &[], "No space left on device");
 }
 
 #[test]
 #[ignore = "needs root (mounts a read-only tmpfs); run by .ci/run"]
 fn an_unwritable_directory_is_refused_before_the_run() {
     let mnt = Mount::tmpfs("tmpfs-ro", "ro,size=1m");
-    let mut a = static_args("1");
-    a.extend(outputs(mnt.path()));
-    let out = run(&a, &[]);
+    let out = run(&with_outputs(static_args("1"), mnt.path()), &[]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert_eq!(err.lines().count(), 1, "{err}");

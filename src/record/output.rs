@@ -105,9 +105,9 @@ impl LinkCheck {
 pub struct PendingFile {
     label: &'static str,
     /// The final name as given (for messages).
-    shown_path: PathBuf,
-    /// The file it really names (symbolic links resolved): the rename's target.
     final_path: PathBuf,
+    /// The file it really names (symbolic links resolved): the rename's target.
+    target_path: PathBuf,
     temp_path: PathBuf,
     out: Option<BufWriter<File>>,
     written: u64,
@@ -126,8 +126,8 @@ impl PendingFile {
         let link = LinkCheck::of(&file, &temp_path).map_err(fail)?;
         Ok(PendingFile {
             label,
-            shown_path: final_path.to_path_buf(),
-            final_path: real,
+            final_path: final_path.to_path_buf(),
+            target_path: real,
             temp_path,
             out: Some(BufWriter::with_capacity(1 << 16, file)),
             written: 0,
@@ -138,7 +138,7 @@ impl PendingFile {
 
     /// The final name, as given.
     pub fn final_path(&self) -> &Path {
-        &self.shown_path
+        &self.final_path
     }
 
     /// The temporary name the bytes go to until the commit.
@@ -158,7 +158,7 @@ impl PendingFile {
 
     /// An error about this output.
     pub fn fail(&self, reason: impl Into<String>) -> OutputError {
-        OutputError::new(self.label, &self.shown_path, reason)
+        OutputError::new(self.label, &self.final_path, reason)
     }
 
     /// Flushes, syncs and checks the file, then renames it to its final name. Returns the final
@@ -169,11 +169,11 @@ impl PendingFile {
             return Err(self.fail(reason));
         }
         inject::commit_delay();
-        std::fs::rename(&self.temp_path, &self.final_path)
+        std::fs::rename(&self.temp_path, &self.target_path)
             .map_err(|e| self.fail(format!("cannot rename the finished file into place: {e}")))?;
         self.out = None; // committed: nothing to remove on drop
-        sync_directory(&self.final_path);
-        Ok((self.shown_path.clone(), self.written))
+        sync_directory(&self.target_path);
+        Ok((self.final_path.clone(), self.written))
     }
 
     /// Flushes and syncs the data and checks that the file holds every byte written.

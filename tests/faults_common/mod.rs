@@ -50,6 +50,34 @@ pub fn outputs(dir: &Path) -> Vec<String> {
     ]
 }
 
+/// `base` followed by the three outputs in `dir`.
+pub fn with_outputs(mut base: Vec<String>, dir: &Path) -> Vec<String> {
+    base.extend(outputs(dir));
+    base
+}
+
+/// A long static run writing to `dir` on a disk that fills up (`env` may inject it): exit 4,
+/// one error line naming the .rrd and `reason`, no .rrd at its final name, the outputs that fit
+/// complete and saying the run stopped for it, no temporary file left.
+pub fn assert_disk_full_run(dir: &Path, env: &[(&str, &str)], reason: &str) {
+    let out = run(&with_outputs(static_args("100"), dir), env);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(4), "{err}");
+    let errors = error_lines(&err);
+    assert_eq!(errors.len(), 1, "{err}");
+    assert!(
+        errors[0].contains("--save") && errors[0].contains(reason),
+        "{err}"
+    );
+    assert!(errors[0].contains("the run stopped at t ="), "{err}");
+    assert!(
+        !dir.join("a.rrd").exists(),
+        "a failed .rrd at its final name"
+    );
+    assert_final_outputs_complete(dir, "output_failed");
+    assert!(partial_files(dir).is_empty(), "{:?}", partial_files(dir));
+}
+
 /// Runs platefall with `args` and the environment `env` to its end.
 pub fn run(args: &[String], env: &[(&str, &str)]) -> Output {
     Command::new(PF)
