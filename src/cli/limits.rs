@@ -174,6 +174,9 @@ fn memory_limit(spec: &str) -> anyhow::Result<(f64, String)> {
 
 /// "16GB", "512MB", "2GiB", "1e9" → bytes.
 fn parse_size(s: &str) -> Option<f64> {
+    if let Ok(n) = s.parse::<f64>() {
+        return (n.is_finite() && n > 0.0).then_some(n);
+    }
     let split = s.find(|c: char| c.is_ascii_alphabetic()).unwrap_or(s.len());
     let (num, unit) = s.split_at(split);
     let n: f64 = num.trim().parse().ok()?;
@@ -218,6 +221,7 @@ mod tests {
         assert_eq!(parse_size("16GB"), Some(16e9));
         assert_eq!(parse_size("512 MiB"), Some(512.0 * 1024.0 * 1024.0));
         assert_eq!(parse_size("lots"), None);
+        assert_eq!(parse_size("1e9"), Some(1e9));
         assert_eq!(parse_size("-1GB"), None);
         assert!(memory_limit("50%").unwrap().0 > 0.0);
         assert!(memory_limit("150%").is_err());

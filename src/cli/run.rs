@@ -45,7 +45,9 @@ pub fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     interrupts.set_phase(Phase::Finalising);
     let summary = summarize(&p.config, &rec, wall_seconds);
     let text = report(&p.config, &summary);
-    let summary_json = serde_json::to_string_pretty(&summary)?;
+    // (Cannot fail for a plain struct; never leave the logger unfinished over it.)
+    let summary_json = serde_json::to_string_pretty(&summary)
+        .unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"));
     let (log_report, mut failures) = finish_logger(logger, &rec.status, &summary_json, &text);
     if let Some(path) = &p.summary_path {
         if let Err(e) = write_atomically("--summary", path, summary_json.as_bytes()) {
