@@ -1,12 +1,13 @@
 //! platefall: parse the command line and run the subcommand (see `cli`).
 //!
-//! Exit codes: 0 completed; 2 bad input (nothing is run or written); 3 the solution diverged
-//! (the recording and summary up to that point are still finalised); 130 interrupted (Ctrl-C).
+//! Exit codes (`cli::EXIT_CODES`, also in `--help`): 0 completed; 2 bad input (nothing is run or
+//! written); 3 the solution diverged; 4 an output could not be written; 130 interrupted.
 use std::process::ExitCode;
 
 use clap::Parser;
 
 use platefall::cli::{bench::run_bench, run::run_case, Cli, Command};
+use platefall::record::output::OutputError;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
@@ -19,7 +20,9 @@ fn main() -> ExitCode {
         Ok(code) => code,
         Err(e) => {
             eprintln!("error: {e:#}");
-            ExitCode::from(2)
+            // An output that could not be created is not bad input.
+            let output = e.chain().any(|c| c.is::<OutputError>());
+            ExitCode::from(if output { 4 } else { 2 })
         }
     }
 }

@@ -148,11 +148,12 @@ fn full_run_round_trips_through_the_rrd_file() {
     assert!(status.first().unwrap().starts_with("started"), "{status:?}");
     assert_eq!(status.last().unwrap(), "completed");
 
-    // CSV: header + one line per step.
+    // CSV: header + one line per step + the trailer saying how the run ended.
     let text = std::fs::read_to_string(&csv).unwrap();
     let lines: Vec<&str> = text.lines().collect();
     assert_eq!(lines[0], CSV_HEADER);
-    assert_eq!(lines.len(), 201);
+    assert_eq!(lines.len(), 202);
+    assert_eq!(lines[201], "# platefall: status=completed steps=200 t=2");
     let row: Vec<f64> = lines[42].split(',').map(|x| x.parse().unwrap()).collect();
     let s = sample(42, 0.01);
     assert_eq!(row.len(), 15);
@@ -352,7 +353,7 @@ fn csv_only_run_needs_no_rerun_sink() {
     drive(&mut logger, &g, 10, 0.01);
     let report = logger.finish(outcome(RunStatus::Completed)).unwrap();
     assert!(report.rrd.is_none());
-    assert_eq!(std::fs::read_to_string(&csv).unwrap().lines().count(), 11);
+    assert_eq!(std::fs::read_to_string(&csv).unwrap().lines().count(), 12);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

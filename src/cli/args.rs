@@ -30,7 +30,7 @@ pub struct SolverArgs {
     pub summary: Option<PathBuf>,
     /// Use the seed's exact grid (N = 16, 24 × 27 stretched intervals over 10 chords); overrides
     /// --resolution, --extent and --growth.
-    #[arg(long)]
+    #[arg(long, conflicts_with_all = ["thickness", "extent", "growth"])]
     pub seed_grid: bool,
     /// Plate thickness as a chord fraction, rounded to whole cells [default: one cell, 1/N, the
     /// thinnest plate the grid holds; a real card is about 1/100 of its chord]. Plates two or more
@@ -70,6 +70,8 @@ pub struct SolverArgs {
     /// Worker threads for the run (0: one per core); the results do not depend on it.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
+    #[command(flatten)]
+    pub limits: super::limits::LimitArgs,
 }
 
 /// `--far-field`.

@@ -5,9 +5,9 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::args::FarFieldArg;
-use super::run::write_atomically;
 use crate::bench::{bench_card, bench_one, card_table, table};
 use crate::record::files::check_writable;
+use crate::record::output::write_atomically;
 
 #[derive(Args, Debug)]
 pub struct BenchArgs {
@@ -57,7 +57,7 @@ pub fn run_bench(args: &BenchArgs) -> anyhow::Result<()> {
         serde_json::to_string_pretty(&step_rows(args)?)?
     };
     if let Some(p) = &args.json {
-        write_atomically(p, json.as_bytes())?;
+        write_atomically("--json", p, json.as_bytes())?;
     }
     Ok(())
 }

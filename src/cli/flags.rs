@@ -44,9 +44,10 @@ pub fn flag(p: Param) -> &'static str {
 /// A bad command line: one line naming the flag, the value and what is accepted.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ArgError {
-    /// A value the library refused.
+    /// A value the library refused (the message already says all the library's does, so the
+    /// library's error is not repeated as a source).
     #[error("{}", input_message(.0))]
-    Input(#[from] InputError),
+    Input(InputError),
     /// A value the command line needs and did not get.
     #[error("{flag} is required {when}")]
     Missing {
@@ -56,6 +57,12 @@ pub enum ArgError {
     /// A subcommand that describes no run.
     #[error("`{0}` is not a case subcommand (static, forced, pinned, free)")]
     NotACase(&'static str),
+}
+
+impl From<InputError> for ArgError {
+    fn from(e: InputError) -> Self {
+        ArgError::Input(e)
+    }
 }
 
 /// The library's message with the flag put in front of the quantity's value.

@@ -4,9 +4,11 @@
 pub mod args;
 pub mod bench;
 pub mod flags;
+pub mod limits;
 pub mod plate_args;
 pub mod record_args;
 pub mod run;
+pub mod signals;
 pub mod threads;
 
 use clap::{Parser, Subcommand};
@@ -19,6 +21,16 @@ pub use bench::BenchArgs;
 pub use flags::ArgError;
 pub use record_args::RecordArgs;
 
+/// The exit codes, shown by `--help` (each means one thing; see the README "Exit codes").
+pub const EXIT_CODES: &str = "Exit codes:
+  0    completed (every output complete at its final name)
+  2    bad input: one line names the value and what is accepted; nothing was run or written
+  3    the solution diverged; the outputs hold the run up to then and say so
+  4    an output could not be written (disk full, permissions, directory removed, sink error):
+       nothing incomplete is left at its final name
+  130  interrupted (Ctrl-C, SIGTERM); the outputs hold the run up to then and say so.
+       A second Ctrl-C quits at once, leaving unfinished outputs as .NAME.partial-PID files";
+
 /// A thin plate falling through a viscous fluid: 2-D Navier–Stokes in a body-fixed grid coupled to
 /// the plate's flight mechanics, streamed live to the Rerun viewer.
 ///
@@ -30,7 +42,8 @@ pub use record_args::RecordArgs;
     version,
     about,
     long_about,
-    propagate_version = true
+    propagate_version = true,
+    after_help = EXIT_CODES
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -40,12 +53,16 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Case A: a plate impulsively started at a fixed angle of attack (vortex shedding, C_L, C_D, Strouhal).
+    #[command(after_help = EXIT_CODES)]
     Static(StaticArgs),
     /// Case B: a translating plate spun up at constant angular acceleration to a rate, then held.
+    #[command(after_help = EXIT_CODES)]
     Forced(ForcedArgs),
     /// Case C: a translating plate free to rotate about its centre (pinned autorotation).
+    #[command(after_help = EXIT_CODES)]
     Pinned(PinnedArgs),
     /// Case D: a plate released into free fall under gravity (the tumbling card).
+    #[command(after_help = EXIT_CODES)]
     Free(FreeArgs),
     /// Time the flow step alone on several grid sizes (ns per cell per step, momentum vs pressure).
     Bench(BenchArgs),

@@ -5,7 +5,7 @@ use std::net::{IpAddr, SocketAddr, TcpListener};
 use std::path::{Path, PathBuf};
 
 use crate::post::{FieldWindow, StreamFrame};
-use crate::record::files::check_writable;
+use crate::record::files::{check_outputs, OutputPath};
 use crate::record::options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
     DEFAULT_PORT, FIELD_RES_RANGE,
@@ -149,12 +149,24 @@ impl RecordArgs {
         Path::new("recordings").join(format!("{case}.rrd"))
     }
 
-    /// Validates the options for a run of `case` that ends at convective time `t_end`.
+    /// True if the run opens a Rerun recording or stream (a file, a server or a viewer).
+    pub fn uses_rerun(&self) -> bool {
+        !self.no_save || self.serve || self.connect.is_some() || self.spawn
+    }
+
+    /// Validates the options for a run of `case` that ends at convective time `t_end`; `others`
+    /// are the run's other outputs (e.g. `("--summary", path)`).
     ///
     /// Checks everything that can be checked before the run starts: numeric ranges, the --connect
-    /// URL, the --serve port (free?), `rerun` on PATH for --spawn, and that the .rrd and CSV paths
-    /// are writable (creating `recordings/` for the default path, but never any other directory).
-    pub fn resolve(&self, case: &str, t_end: f64) -> Result<RecordOptions, OptionsError> {
+    /// URL, the --serve port (free?), `rerun` on PATH for --spawn, and that every output path is
+    /// writable and names a file of its own (creating `recordings/` for the default path, but
+    /// never any other directory).
+    pub fn resolve(
+        &self,
+        case: &str,
+        t_end: f64,
+        others: &[(&'static str, &Path)],
+    ) -> Result<RecordOptions, OptionsError> {
         let (field_window, streamlines_frame) = self.field_options()?;
         self.check_viewer_feature()?;
         let serve = self.serve_options()?;
@@ -163,7 +175,8 @@ impl RecordArgs {
             return Err(OptionsError::NoViewer);
         }
         let save = self.save_path(case)?;
-        let csv = self.csv_path(save.as_deref())?;
+        self.check_paths(save.as_deref(), others)?;
+        let csv = self.csv.clone();
         let progress = if self.quiet {
             ProgressMode::Off
         } else {
@@ -259,10 +272,10 @@ impl RecordArgs {
         if self.no_save {
             return Ok(None);
         }
-        let (path, is_default) = match &self.save {
-            Some(path) => (path.clone(), false),
-            None => (Self::default_save_path(case), true),
-        };
+        let path = self
+            .save
+            .clone()
+            .unwrap_or_else(|| Self::default_save_path(case));
         if path.extension().and_then(|e| e.to_str()) != Some("rrd") {
             return Err(path_error(
                 "--save",
@@ -270,19 +283,33 @@ impl RecordArgs {
                 "the file name must end in .rrd".into(),
             ));
         }
-        check_writable(&path, is_default).map_err(|r| path_error("--save", &path, r))?;
         Ok(Some(path))
     }
 
-    fn csv_path(&self, save: Option<&Path>) -> Result<Option<PathBuf>, OptionsError> {
-        let Some(path) = &self.csv else {
-            return Ok(None);
-        };
-        if save == Some(path.as_path()) {
-            return Err(path_error("--csv", path, "is also the .rrd file".into()));
+    /// Every output path writable and a file of its own (`files::check_outputs`).
+    fn check_paths(
+        &self,
+        save: Option<&Path>,
+        others: &[(&'static str, &Path)],
+    ) -> Result<(), OptionsError> {
+        let mut outputs = Vec::new();
+        if let Some(path) = save {
+            let create_dir = self.save.is_none(); // only the default recordings/ is created
+            outputs.push(OutputPath {
+                flag: "--save",
+                path,
+                create_dir,
+            });
         }
-        check_writable(path, false).map_err(|r| path_error("--csv", path, r))?;
-        Ok(Some(path.clone()))
+        let csv = self.csv.as_deref().map(|p| ("--csv", p));
+        for (flag, path) in csv.into_iter().chain(others.iter().copied()) {
+            outputs.push(OutputPath {
+                flag,
+                path,
+                create_dir: false,
+            });
+        }
+        check_outputs(&outputs).map_err(|p| path_error(p.flag, &p.path, p.reason))
     }
 }
 
@@ -358,7 +385,7 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let save = dir.join("a.rrd");
         let o = args(&["--save", save.to_str().unwrap()])
-            .resolve("free", 60.0)
+            .resolve("free", 60.0, &[])
             .unwrap();
         assert_eq!(o.save.as_deref(), Some(save.as_path()));
         assert_eq!(o.field_every, DEFAULT_FIELD_EVERY);
@@ -391,7 +418,7 @@ mod tests {
             if !argv.contains(&"--save") {
                 a.no_save = true;
             }
-            let e = a.resolve("free", 1.0).unwrap_err().to_string();
+            let e = a.resolve("free", 1.0, &[]).unwrap_err().to_string();
             assert!(e.contains(expect), "{argv:?}: {e}");
             assert!(!e.contains('\n'), "one line: {e}");
         }
@@ -404,7 +431,7 @@ mod tests {
         let port = l.local_addr().unwrap().port().to_string();
         let mut a = args(&["--serve", "--port", &port]);
         a.no_save = true;
-        let e = a.resolve("free", 1.0).unwrap_err().to_string();
+        let e = a.resolve("free", 1.0, &[]).unwrap_err().to_string();
         assert!(e.starts_with(&format!("--port {port}")), "{e}");
     }
 
@@ -416,10 +443,13 @@ mod tests {
             (&["--no-save", "--serve"][..], "--serve"),
             (&["--no-save", "--spawn"][..], "--spawn"),
         ] {
-            let e = args(argv).resolve("free", 1.0).unwrap_err().to_string();
+            let e = args(argv)
+                .resolve("free", 1.0, &[])
+                .unwrap_err()
+                .to_string();
             assert!(e.starts_with(flag) && e.contains("viewer"), "{argv:?}: {e}");
         }
-        let o = args(&["--no-save"]).resolve("free", 1.0).unwrap();
+        let o = args(&["--no-save"]).resolve("free", 1.0, &[]).unwrap();
         assert!(!o.has_rerun_sink());
     }
 }

@@ -1,8 +1,7 @@
-//! Running one case from the command line: validate everything, start the solver and the logger
-//! threads, report, and exit with a code that means one thing.
-//!
-//! Exit codes: 0 completed; 2 bad input (nothing is run or written); 3 the solution diverged
-//! (the recording and summary up to that point are still finalised); 130 interrupted (Ctrl-C).
+//! Running one case from the command line: validate everything (values, paths, resource
+//! limits), start the solver and the logger threads, finalise every output, report, and exit
+//! with a code that means one thing (`cli::EXIT_CODES`): 0 completed; 2 bad input (nothing is
+//! run or written); 3 diverged; 4 an output could not be written; 130 interrupted.
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -10,15 +9,15 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
 
-use anyhow::Context;
-
 use super::args::run_config;
+use super::limits::check_limits;
+use super::signals::{Interrupts, Phase};
 use super::Command;
 use crate::post::report::report;
 use crate::post::summary::{summarize, Summary};
-use crate::record::files::check_writable;
 use crate::record::messages::{RunInfo, RunOutcome};
-use crate::record::{self, Logger, RecordOptions};
+use crate::record::output::write_atomically;
+use crate::record::{self, Logger, LoggerReport, RecordOptions};
 use crate::sim::{
     FieldSnapshot, Observer, RunConfig, RunRecord, RunStatus, Simulation, StepSample,
 };
@@ -31,58 +30,59 @@ struct Prepared {
     threads: usize,
 }
 
-/// Runs a case subcommand to its end; the exit code says how it ended.
+/// Runs a case subcommand to its end; the exit code says how it ended. An `Err` means nothing
+/// was run (bad input; or, for an [`OutputError`](crate::record::output::OutputError), an
+/// output that could not even be created).
 pub fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     let p = prepare(cmd)?;
+    let interrupts = Interrupts::install()?;
     let mut sim = Simulation::new(p.config.clone())?;
-    let stop = Arc::new(AtomicBool::new(false));
-    install_ctrlc(stop.clone())?;
     let mut logger = record::spawn_logger(p.opts.clone(), run_info(&p.config, &sim))?;
     let pool = super::threads::pool(p.threads)?;
 
-    let (rec, wall_seconds, lost) = solve(&mut sim, &mut logger, &stop, &pool);
-
+    let (mut rec, wall_seconds, lost) = solve(&mut sim, &mut logger, interrupts.stop(), &pool);
+    if let Some(why) = lost {
+        rec.status = RunStatus::OutputFailed(why);
+    }
+    interrupts.set_phase(Phase::Finalising);
     let summary = summarize(&p.config, &rec, wall_seconds);
     let text = report(&p.config, &summary);
-    let summary_json = serde_json::to_string_pretty(&summary)?;
+    // (Cannot fail for a plain struct; never leave the logger unfinished over it.)
+    let summary_json = serde_json::to_string_pretty(&summary)
+        .unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"));
+    let (log_report, mut failures) = finish_logger(logger, &rec.status, &summary_json, &text);
     if let Some(path) = &p.summary_path {
-        write_atomically(path, summary_json.as_bytes())
-            .with_context(|| format!("writing --summary {}", path.display()))?;
+        if let Err(e) = write_atomically("--summary", path, summary_json.as_bytes()) {
+            failures.push(e.to_string());
+        }
     }
-    let outcome = RunOutcome {
-        status: rec.status.clone(),
-        summary_json,
-        report: text.clone(),
-    };
-    let log_report = logger.finish(outcome)?;
-    eprintln!();
-    print!("{text}");
-    for line in log_report.lines() {
-        eprintln!("{line}");
-    }
-    std::io::stdout().flush().ok();
-    if let Some(e) = lost {
-        eprintln!("error: the logger thread stopped early: {e:#}");
-    }
-    let code = exit_code(&rec.status, &summary);
-    if rec.status != RunStatus::Interrupted {
+    print_report(&text, log_report.as_ref());
+    let code = exit_code(&rec.status, &summary, &failures);
+    if let Some(r) = log_report.filter(|_| rec.status != RunStatus::Interrupted) {
         // --serve keeps the server up for late viewers until Ctrl-C.
-        log_report.serve_until_interrupted(&stop)?;
+        interrupts.set_phase(Phase::Serving);
+        r.serve_until_interrupted(interrupts.stop())?;
     }
     Ok(code)
 }
 
-/// Validates everything before anything runs or is written.
+/// Validates everything before anything runs or is written: values, resource limits, paths.
 fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
     let config = run_config(cmd)?;
     let Some((solver_args, record_args)) = cmd.case_args() else {
         anyhow::bail!("not a case subcommand");
     };
-    let summary_path = solver_args.summary.clone();
-    if let Some(path) = &summary_path {
-        check_writable(path, false)
-            .map_err(|reason| anyhow::anyhow!("--summary {}: {reason}", path.display()))?;
+    let queued = record_args
+        .uses_rerun()
+        .then_some(RecordOptions::default().max_fields_in_flight);
+    if let Some(warning) = check_limits(&config, &solver_args.limits, queued)? {
+        eprintln!("warning: {warning}");
     }
+    let summary_path = solver_args.summary.clone();
+    let others: Vec<(&'static str, &Path)> = summary_path
+        .iter()
+        .map(|p| ("--summary", p.as_path()))
+        .collect();
     // A run that stops after a number of turns has no known end time: show no ETA rather than a
     // wrong one.
     let progress_end = if config.time.turns.is_some() {
@@ -90,7 +90,7 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
     } else {
         config.time.t_end
     };
-    let opts = record_args.resolve(config.case.name(), progress_end)?;
+    let opts = record_args.resolve(config.case.name(), progress_end, &others)?;
     for line in super::args::plate_notes(cmd, &config) {
         eprintln!("{line}");
     }
@@ -102,17 +102,36 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
     })
 }
 
-/// The first Ctrl-C asks the run to stop (it finalises what it has); a second one, while the
-/// run is still going, quits at once.
-fn install_ctrlc(stop: Arc<AtomicBool>) -> anyhow::Result<()> {
-    let presses = AtomicBool::new(false);
-    ctrlc::set_handler(move || {
-        if presses.swap(true, Ordering::SeqCst) && !stop.load(Ordering::SeqCst) {
-            std::process::exit(130);
+/// Sends the outcome and waits for the logger to finalise its outputs; the report (None if the
+/// logger thread failed) and the outputs that could not be written.
+fn finish_logger(
+    logger: Logger,
+    status: &RunStatus,
+    summary_json: &str,
+    text: &str,
+) -> (Option<LoggerReport>, Vec<String>) {
+    let outcome = RunOutcome {
+        status: status.clone(),
+        summary_json: summary_json.to_string(),
+        report: text.to_string(),
+    };
+    match logger.finish(outcome) {
+        Ok(r) => {
+            let failures = r.errors.clone();
+            (Some(r), failures)
         }
-        stop.store(true, Ordering::SeqCst);
-    })
-    .context("installing the Ctrl-C handler")
+        Err(e) => (None, vec![format!("the recording and CSV: {e:#}")]),
+    }
+}
+
+/// The report on stdout, the outputs written on stderr.
+fn print_report(text: &str, log_report: Option<&LoggerReport>) {
+    eprintln!();
+    print!("{text}");
+    for line in log_report.map(LoggerReport::lines).unwrap_or_default() {
+        eprintln!("{line}");
+    }
+    std::io::stdout().flush().ok();
 }
 
 /// What the recording needs to know about the run before it starts.
@@ -128,13 +147,14 @@ fn run_info(config: &RunConfig, sim: &Simulation) -> RunInfo {
     }
 }
 
-/// Runs the solver inside the worker pool (this thread waits), timing it.
+/// Runs the solver inside the worker pool (this thread waits), timing it. The third value is the
+/// output failure that stopped the run, if one did.
 fn solve(
     sim: &mut Simulation,
     logger: &mut Logger,
     stop: &AtomicBool,
     pool: &rayon::ThreadPool,
-) -> (RunRecord, f64, Option<anyhow::Error>) {
+) -> (RunRecord, f64, Option<String>) {
     pool.install(|| {
         let mut fwd = Forward {
             logger,
@@ -147,21 +167,38 @@ fn solve(
     })
 }
 
-/// The exit code of a finished run, with its one-line message on stderr.
-fn exit_code(status: &RunStatus, summary: &Summary) -> ExitCode {
+/// The exit code of a finished run, with its one-line messages on stderr.
+fn exit_code(status: &RunStatus, summary: &Summary, failures: &[String]) -> ExitCode {
+    if !failures.is_empty() {
+        let stopped = match status {
+            RunStatus::OutputFailed(_) => format!("; the run stopped at t = {:.3}", summary.t_end),
+            _ => String::new(),
+        };
+        eprintln!(
+            "error: could not write {}{stopped}; nothing incomplete was left at a final name",
+            failures.join("; ")
+        );
+    }
     match status {
-        RunStatus::Completed => ExitCode::SUCCESS,
-        RunStatus::Diverged(msg) => {
-            eprintln!("error: {msg}; try a smaller --cfl or a finer --resolution");
-            ExitCode::from(3)
-        }
         RunStatus::Interrupted => {
             eprintln!(
-                "interrupted: the recording and summary hold the run up to t = {:.3}",
+                "interrupted: the outputs hold the run up to t = {:.3} and say so",
                 summary.t_end
             );
             ExitCode::from(130)
         }
+        RunStatus::OutputFailed(msg) => {
+            if failures.is_empty() {
+                eprintln!("error: {msg}");
+            }
+            ExitCode::from(4)
+        }
+        _ if !failures.is_empty() => ExitCode::from(4),
+        RunStatus::Diverged(msg) => {
+            eprintln!("error: {msg}; try a smaller --cfl or a finer --resolution");
+            ExitCode::from(3)
+        }
+        RunStatus::Completed => ExitCode::SUCCESS,
     }
 }
 
@@ -169,14 +206,15 @@ fn exit_code(status: &RunStatus, summary: &Summary) -> ExitCode {
 struct Forward<'a> {
     logger: &'a mut Logger,
     stop: &'a AtomicBool,
-    lost: Option<anyhow::Error>,
+    lost: Option<String>,
 }
 
 impl Observer for Forward<'_> {
     fn step(&mut self, sample: &StepSample) {
         if let Err(e) = self.logger.step(*sample) {
-            // The logger thread is gone: stop the run rather than compute what cannot be kept.
-            self.lost.get_or_insert(e);
+            // An output failed, or the logger thread is gone: stop the run rather than compute
+            // what cannot be kept.
+            self.lost.get_or_insert(format!("{e:#}"));
             self.stop.store(true, Ordering::SeqCst);
         }
     }
@@ -205,11 +243,4 @@ fn command_line() -> String {
         })
         .collect::<Vec<_>>()
         .join(" ")
-}
-
-/// Writes via a temporary file and a rename, so a reader never sees half a file.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let tmp = path.with_extension("tmp-platefall");
-    std::fs::write(&tmp, bytes)?;
-    std::fs::rename(&tmp, path)
 }

@@ -6,12 +6,10 @@ use std::f64::consts::PI;
 
 use serde::Serialize;
 
-use super::analysis::{
-    count_turns, dominant_frequency, mean_over, range_over, whole_periods, TimeWindow,
-};
+use super::analysis::{count_turns, dominant_frequency, whole_periods, TimeWindow};
 use super::regime::{classify, regime_window, MotionClass};
 use crate::config::{physical, Units};
-use crate::sim::{Case, RunConfig, RunRecord, StepSample};
+use crate::sim::{Case, History, Quantity, RunConfig, RunRecord, StepSample};
 
 /// Peak-to-peak C_L below which the flow counts as steady (no Strouhal number).
 pub const STEADY_BAND: f64 = 0.02;
@@ -211,15 +209,16 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
 fn set_coefficients(
     sum: &mut Summary,
     config: &RunConfig,
-    s: &[StepSample],
+    h: &History,
     w: Option<TimeWindow>,
     freq: Option<f64>,
 ) {
-    let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
-    let cl_range = w.and_then(|w| range_over(s, w, |x| x.cl));
-    (sum.mean_cl, sum.mean_cd, sum.mean_cm) = (mean(|x| x.cl), mean(|x| x.cd), mean(|x| x.cm));
+    let mean = |q: Quantity| w.and_then(|w| h.mean(q, w.t0, w.t1));
+    let cl_range = w.and_then(|w| h.range(Quantity::Cl, w.t0, w.t1));
+    (sum.mean_cl, sum.mean_cd, sum.mean_cm) =
+        (mean(Quantity::Cl), mean(Quantity::Cd), mean(Quantity::Cm));
     (sum.min_cl, sum.max_cl) = (cl_range.map(|r| r.0), cl_range.map(|r| r.1));
-    sum.max_cd = w.and_then(|w| range_over(s, w, |x| x.cd)).map(|r| r.1);
+    sum.max_cd = w.and_then(|w| h.range(Quantity::Cd, w.t0, w.t1)).map(|r| r.1);
     if let (Case::Static { alpha, .. }, Some(f)) = (&config.case, freq) {
         (sum.strouhal_chord, sum.strouhal_width) = (Some(f), Some(f * alpha.sin().abs()));
     }
@@ -227,16 +226,16 @@ fn set_coefficients(
 
 /// The keys of a moving plate (forced, pinned, free) over the developed window `w`.
 fn set_motion(sum: &mut Summary, config: &RunConfig, rec: &RunRecord, w: Option<TimeWindow>) {
-    let s = &rec.samples;
-    let mean = |f: fn(&StepSample) -> f64| w.and_then(|w| mean_over(s, w, f));
+    let (h, s) = (&rec.samples, &rec.samples[..]);
+    let mean = |q: Quantity| w.and_then(|w| h.mean(q, w.t0, w.t1));
     if config.case.is_coupled() {
-        sum.mean_speed = mean(|x| x.speed);
-        sum.mean_gamma = mean(|x| x.gamma);
+        sum.mean_speed = mean(Quantity::Speed);
+        sum.mean_gamma = mean(Quantity::Gamma);
         sum.autorotation_rule = Some(
             "time of the first complete net turn after release (counted from any reversal)".into(),
         );
     }
-    sum.mean_omega = mean(|x| x.omega);
+    sum.mean_omega = mean(Quantity::Omega);
     sum.revolutions = Some(count_turns(s, rec.t_release).revolutions);
     sum.lag_cd_behind_cl = w.and_then(|w| lag_cd_behind_cl(s, w));
     sum.peak_cl_rotation = match (sum.mean_omega, sum.min_cl, sum.max_cl) {
@@ -256,15 +255,15 @@ fn motion_of(config: &RunConfig, rec: &RunRecord) -> Option<(TimeWindow, MotionC
 
 /// The falling-plate keys over the developed window `w`.
 fn fall_keys(
-    s: &[StepSample],
+    h: &History,
     w: Option<TimeWindow>,
     motion: Option<&(TimeWindow, MotionClass)>,
 ) -> FallKeys {
     let Some((rw, class)) = motion else {
         return FallKeys::default();
     };
-    let descent = w.and_then(|w| mean_over(s, w, |x| -x.ydot));
-    let drift = w.and_then(|w| mean_over(s, w, |x| x.xdot));
+    let descent = w.and_then(|w| h.mean(Quantity::Ydot, w.t0, w.t1)).map(|v| -v);
+    let drift = w.and_then(|w| h.mean(Quantity::Xdot, w.t0, w.t1));
     FallKeys {
         regime: Some(class.regime.name().into()),
         regime_rule: Some(
@@ -301,8 +300,14 @@ fn physical_keys(units: Option<&Units>, mean_speed: Option<f64>, fall: &FallKeys
 }
 
 /// The summary of a run; `wall_seconds` is measured by the caller (the solver reads no clock).
+///
+/// Means and extremes come from the bounded history's exact running integrals and per-step
+/// extremes (`History::mean`, `History::range`): exact over every step of the developed window
+/// between its first and last retained samples. Turns, the spectrum and the lag read the retained
+/// samples (`&rec.samples` is a `&[StepSample]`).
 pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summary {
-    let s = &rec.samples;
+    let h = &rec.samples;
+    let s: &[StepSample] = h;
     let last_t = s.last().map(|x| x.t).unwrap_or(0.0);
     let provisional = TimeWindow {
         t0: 0.5 * last_t,
@@ -320,7 +325,7 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         re: config.flow.re,
         resolution: config.grid.resolution,
         cells: rec.cells,
-        steps: s.len() as u64,
+        steps: h.total_steps(),
         t_end: last_t,
         wall_seconds,
         developed_from: w.map(|w| w.t0),
@@ -329,11 +334,11 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         autorotation_time: established,
         ..Summary::default()
     };
-    set_coefficients(&mut sum, config, s, w, freq);
+    set_coefficients(&mut sum, config, h, w, freq);
     if !matches!(config.case, Case::Static { .. }) {
         set_motion(&mut sum, config, rec, w);
     }
-    sum.fall = fall_keys(s, w, motion.as_ref());
+    sum.fall = fall_keys(h, w, motion.as_ref());
     let units = Units::of(config);
     sum.mean_speed_ft_s = physical(config).and_then(|p| sum.mean_speed.map(|v| p.speed_to_ft_s(v)));
     sum.mean_omega_rad_s = units.and_then(|u| sum.mean_omega.map(|v| u.rate_rad_s(v.abs())));

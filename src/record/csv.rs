@@ -1,39 +1,48 @@
-//! `--csv`: one line per step, written (buffered) on the logger thread.
-use std::fs::File;
-use std::io::{BufWriter, Write as _};
+//! `--csv`: one line per step, written (buffered) on the logger thread through a [`PendingFile`]
+//! (renamed into place when complete), ending with a trailer line that says how the run ended:
+//!
+//! ```text
+//! # platefall: status=completed steps=1234 t=80
+//! # platefall: status=diverged steps=57 t=0.53 reason=the flow solution diverged at …
+//! ```
+//!
+//! `status` is `completed`, `diverged`, `interrupted` or `output_failed`; `steps` the data rows;
+//! `t` the last row's time; `reason` (to the end of the line) what stopped the run. Readers skip
+//! it as a comment: `pandas.read_csv(f, comment="#")`, `numpy.loadtxt(f, delimiter=",",
+//! skiprows=1)`; `grep -v '^#'` gives the bare table.
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
-use anyhow::Context as _;
-
-use crate::sim::StepSample;
+use super::output::{LinkCheck, OutputError, PendingFile};
+use crate::sim::{RunStatus, StepSample};
 
 /// The header line (column names; angles in radians, everything non-dimensional).
 pub const CSV_HEADER: &str = "time,step,dt,C_L,C_D,C_M,X,Y,theta,Xdot,Ydot,thetadot,V,gamma,alpha";
 
+/// The start of the trailer line.
+pub const CSV_TRAILER: &str = "# platefall:";
+
 /// A buffered per-step CSV writer.
 pub struct CsvWriter {
-    out: BufWriter<File>,
-    path: PathBuf,
+    out: PendingFile,
     rows: u64,
+    last_t: f64,
 }
 
 impl CsvWriter {
-    /// Creates (truncates) the file and writes the header.
-    pub fn create(path: &Path) -> anyhow::Result<Self> {
-        let file = File::create(path)
-            .with_context(|| format!("--csv {}: cannot create", path.display()))?;
-        let mut out = BufWriter::with_capacity(1 << 16, file);
-        writeln!(out, "{CSV_HEADER}")
-            .with_context(|| format!("--csv {}: write failed", path.display()))?;
+    /// Creates the temporary file and writes the header.
+    pub fn create(path: &Path) -> Result<Self, OutputError> {
+        let mut out = PendingFile::create("--csv", path)?;
+        writeln!(out, "{CSV_HEADER}").map_err(|e| out.fail(format!("write failed: {e}")))?;
         Ok(Self {
             out,
-            path: path.to_path_buf(),
             rows: 0,
+            last_t: 0.0,
         })
     }
 
     /// Appends one step. Numbers use Rust's shortest round-trip formatting (exact).
-    pub fn write(&mut self, s: &StepSample) -> anyhow::Result<()> {
+    pub fn write(&mut self, s: &StepSample) -> Result<(), OutputError> {
         writeln!(
             self.out,
             "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
@@ -53,21 +62,42 @@ impl CsvWriter {
             s.gamma,
             s.alpha
         )
-        .with_context(|| format!("--csv {}: write failed", self.path.display()))?;
+        .map_err(|e| self.out.fail(format!("write failed: {e}")))?;
         self.rows += 1;
+        self.last_t = s.t;
         Ok(())
     }
 
-    /// Flushes and syncs the file; returns the path and the number of rows written.
-    pub fn finish(mut self) -> anyhow::Result<(PathBuf, u64)> {
-        self.out
-            .flush()
-            .with_context(|| format!("--csv {}: flush failed", self.path.display()))?;
-        let file = self
-            .out
-            .into_inner()
-            .map_err(|e| anyhow::anyhow!("--csv {}: {}", self.path.display(), e.error()))?;
-        file.sync_all().ok();
-        Ok((self.path, self.rows))
+    /// An error about this file.
+    pub fn fail(&self, reason: impl Into<String>) -> OutputError {
+        self.out.fail(reason)
     }
+
+    /// A handle that notices if the file being written is removed.
+    pub fn link_check(&self) -> LinkCheck {
+        self.out.link_check()
+    }
+
+    /// Writes the trailer, then syncs and renames the file into place; returns its final name and
+    /// the number of data rows.
+    pub fn finish(mut self, status: &RunStatus) -> Result<(PathBuf, u64), OutputError> {
+        let trailer = trailer(status, self.rows, self.last_t);
+        writeln!(self.out, "{trailer}").map_err(|e| self.out.fail(format!("write failed: {e}")))?;
+        let (path, _) = self.out.commit()?;
+        Ok((path, self.rows))
+    }
+}
+
+/// The trailer line for a run that ended with `status` after `rows` rows, the last at time `t`.
+pub fn trailer(status: &RunStatus, rows: u64, t: f64) -> String {
+    let reason = match status {
+        RunStatus::Diverged(why) | RunStatus::OutputFailed(why) => {
+            format!(" reason={}", why.replace(['\n', '\r'], " "))
+        }
+        RunStatus::Completed | RunStatus::Interrupted => String::new(),
+    };
+    format!(
+        "{CSV_TRAILER} status={} steps={rows} t={t}{reason}",
+        status.name()
+    )
 }

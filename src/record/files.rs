@@ -1,14 +1,12 @@
-//! Checks on output paths, made before a run starts so that a bad path costs nothing.
+//! Checks on output paths, made before a run starts so that a bad path costs nothing: each output
+//! can be written ([`check_writable`]), and no two outputs are the same file ([`check_outputs`]).
 use std::path::{Path, PathBuf};
 
 /// Why `path` cannot take an output: its directory does not exist or is not writable, or the path
 /// is a directory or an existing file that cannot be replaced. With `create_dir`, the parent
 /// directory is created first (for default paths such as `recordings/`).
 pub fn check_writable(path: &Path, create_dir: bool) -> Result<(), String> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
+    let dir = directory_of(path);
     if create_dir {
         std::fs::create_dir_all(&dir)
             .map_err(|e| format!("cannot create directory {}: {e}", dir.display()))?;
@@ -26,7 +24,10 @@ pub fn check_writable(path: &Path, create_dir: bool) -> Result<(), String> {
     if path.is_dir() {
         return Err("is a directory".into());
     }
-    probe_directory(&dir)?;
+    if path.exists() && !path.is_file() {
+        return Err("exists and is not a regular file".into());
+    }
+    probe_directory(&directory_of(&resolve_links(path)))?;
     if path.exists() {
         std::fs::OpenOptions::new()
             .append(true)
@@ -34,6 +35,14 @@ pub fn check_writable(path: &Path, create_dir: bool) -> Result<(), String> {
             .map_err(|e| format!("exists and cannot be overwritten ({e})"))?;
     }
     Ok(())
+}
+
+/// The directory a path's file lives in ("." for a bare file name).
+fn directory_of(path: &Path) -> PathBuf {
+    match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    }
 }
 
 /// Creates and removes a uniquely named file in `dir`.
@@ -53,4 +62,119 @@ fn probe_directory(dir: &Path) -> Result<(), String> {
         .map_err(|e| format!("directory {} is not writable ({e})", dir.display()))?;
     let _ = std::fs::remove_file(&probe);
     Ok(())
+}
+
+/// The file a path really names: `.`/`..` and symbolic links resolved, in the directory and in
+/// the file name itself (a link to a file that does not exist yet is followed too). An output
+/// written through a symbolic link replaces the link's target, as a direct write would.
+pub fn resolve_links(path: &Path) -> PathBuf {
+    let mut current = path.to_path_buf();
+    for _ in 0..40 {
+        let dir = directory_of(&current);
+        let dir = dir.canonicalize().unwrap_or(dir);
+        let Some(name) = current.file_name() else {
+            return current;
+        };
+        let full = dir.join(name);
+        match std::fs::read_link(&full) {
+            Ok(target) => current = dir.join(target),
+            Err(_) => return full,
+        }
+    }
+    current
+}
+
+/// One output a run writes: the option that names it, its path, and whether its directory may be
+/// created (default paths only).
+#[derive(Clone, Copy, Debug)]
+pub struct OutputPath<'a> {
+    pub flag: &'static str,
+    pub path: &'a Path,
+    pub create_dir: bool,
+}
+
+/// A refused output path: the option, the path as given, and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PathProblem {
+    pub flag: &'static str,
+    pub path: PathBuf,
+    pub reason: String,
+}
+
+/// Checks every output of a run: each must be writable ([`check_writable`]) and no two may be
+/// the same file, whether named alike, through `..`, a symbolic link or a hard link.
+pub fn check_outputs(outputs: &[OutputPath]) -> Result<(), PathProblem> {
+    let mut seen: Vec<(&OutputPath, PathBuf)> = Vec::new();
+    for out in outputs {
+        let problem = |reason: String| PathProblem {
+            flag: out.flag,
+            path: out.path.to_path_buf(),
+            reason,
+        };
+        check_writable(out.path, out.create_dir).map_err(problem)?;
+        let real = resolve_links(out.path);
+        if let Some((other, _)) = seen
+            .iter()
+            .find(|(o, r)| *r == real || same_existing_file(o.path, out.path))
+        {
+            return Err(problem(format!(
+                "is the same file as {} {}; each output needs its own file",
+                other.flag,
+                other.path.display()
+            )));
+        }
+        seen.push((out, real));
+    }
+    Ok(())
+}
+
+/// True if both paths exist and are one file (hard links included).
+fn same_existing_file(a: &Path, b: &Path) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt as _;
+        match (std::fs::metadata(a), std::fs::metadata(b)) {
+            (Ok(x), Ok(y)) => (x.dev(), x.ino()) == (y.dev(), y.ino()),
+            _ => false,
+        }
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (a, b);
+        false
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_same_file_under_other_names_is_refused() {
+        let d = std::env::temp_dir().join(format!("pf-files-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(d.join("sub")).unwrap();
+        let a = d.join("a.rrd");
+        fn out<'a>(flag: &'static str, path: &'a Path) -> OutputPath<'a> {
+            OutputPath {
+                flag,
+                path,
+                create_dir: false,
+            }
+        }
+        let dotted = d.join("sub/../a.rrd");
+        let e = check_outputs(&[out("--save", &a), out("--summary", &dotted)]).unwrap_err();
+        assert_eq!(e.flag, "--summary");
+        assert!(e.reason.contains("same file as --save"), "{e:?}");
+        #[cfg(unix)]
+        {
+            let link = d.join("link.json");
+            std::os::unix::fs::symlink(&a, &link).unwrap();
+            let e = check_outputs(&[out("--save", &a), out("--summary", &link)]).unwrap_err();
+            assert_eq!(e.flag, "--summary");
+        }
+        let b = d.join("b.csv");
+        assert!(check_outputs(&[out("--save", &a), out("--csv", &b)]).is_ok());
+        let _ = std::fs::remove_dir_all(&d);
+    }
 }

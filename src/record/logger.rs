@@ -3,7 +3,7 @@ use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
 use std::thread::JoinHandle;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use anyhow::Context as _;
 use crossbeam_channel::{bounded, Receiver, RecvTimeoutError, Sender, TrySendError};
@@ -11,6 +11,7 @@ use crossbeam_channel::{bounded, Receiver, RecvTimeoutError, Sender, TrySendErro
 use super::csv::CsvWriter;
 use super::messages::{Message, RunInfo, RunOutcome};
 use super::options::RecordOptions;
+use super::output::{LinkCheck, OutputError};
 use super::progress::Progress;
 use super::viewer::{ConnectReport, LiveServer, Viewer};
 use crate::sim::{FieldSnapshot, RunStatus, StepSample};
@@ -22,7 +23,13 @@ struct Shared {
     fields_skipped: AtomicU64,
     /// Held by the logger thread while it handles a message; see [`Logger::pause`].
     gate: Mutex<()>,
+    /// The first output that could not be written: the solver stops at its next step.
+    failure: Mutex<Option<String>>,
+    failed: AtomicBool,
 }
+
+/// How often the logger checks that the files being written are still on disk.
+const LINK_CHECK_EVERY: Duration = Duration::from_secs(1);
 
 /// The solver's handle on the logger thread. Created by [`spawn_logger`].
 ///
@@ -55,6 +62,9 @@ pub struct LoggerReport {
     /// Warnings for the end-of-run report (part of [`LoggerReport::lines`]; problems found when
     /// the sinks were opened were also printed then).
     pub notes: Vec<String>,
+    /// Outputs that could not be written (one line each, naming the option and the file); each
+    /// left nothing at its final name. Not part of `lines`: the caller reports them as errors.
+    pub errors: Vec<String>,
     /// Keeps the --serve server alive after the run; dropped by `serve_until_interrupted`.
     server: Option<LiveServer>,
 }
@@ -70,6 +80,7 @@ impl std::fmt::Debug for LoggerReport {
             .field("serve_url", &self.serve_url)
             .field("connect", &self.connect)
             .field("notes", &self.notes)
+            .field("errors", &self.errors)
             .field("serving", &self.server.is_some())
             .finish()
     }
@@ -157,6 +168,7 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         Some(path) => Some(CsvWriter::create(path)?),
         None => None,
     };
+    let csv_link = csv.as_ref().map(CsvWriter::link_check);
     let viewer = if opts.has_rerun_sink() {
         Some(Viewer::open(&opts, &info)?)
     } else {
@@ -172,10 +184,12 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         serve_url: opts.serve.as_ref().map(|s| s.url()),
         opts,
         csv,
+        csv_link,
         viewer,
         steps: 0,
         fields: 0,
         errors: Vec::new(),
+        last_check: Instant::now(),
     };
     let thread = std::thread::Builder::new()
         .name("platefall-logger".into())
@@ -212,11 +226,16 @@ impl Logger {
     }
 
     /// Sends one step (blocking when the channel is full: time series are never dropped).
-    /// Fails only if the logger thread has stopped.
+    /// Fails if an output could not be written (stop the run then: nothing more can be kept) or
+    /// if the logger thread has stopped.
     pub fn step(&self, sample: StepSample) -> anyhow::Result<()> {
         let tx = self.tx.as_ref().context("the logger has finished")?;
         tx.send(Message::Step(sample))
-            .map_err(|_| anyhow::anyhow!("the logger thread stopped unexpectedly"))
+            .map_err(|_| anyhow::anyhow!("the logger thread stopped unexpectedly"))?;
+        match self.output_failure() {
+            Some(why) => anyhow::bail!("{why}"),
+            None => Ok(()),
+        }
     }
 
     /// Offers a field snapshot without blocking. Returns false (and counts it as skipped) when
@@ -240,6 +259,19 @@ impl Logger {
                 skip()
             }
         }
+    }
+
+    /// The first output that could not be written, if any (one line).
+    pub fn output_failure(&self) -> Option<String> {
+        if !self.shared.failed.load(Ordering::SeqCst) {
+            return None;
+        }
+        let g = self
+            .shared
+            .failure
+            .lock()
+            .unwrap_or_else(|e| e.into_inner());
+        g.clone()
     }
 
     /// Field snapshots skipped so far.
@@ -292,12 +324,14 @@ struct LoggerThread {
     opts: RecordOptions,
     progress: Progress,
     csv: Option<CsvWriter>,
+    csv_link: Option<LinkCheck>,
     viewer: Option<Viewer>,
     serve_url: Option<String>,
     steps: u64,
     fields: u64,
-    /// What went wrong with an output (the run goes on; the report says so).
+    /// What went wrong with an output (the report says so; a write error also stops the run).
     errors: Vec<String>,
+    last_check: Instant,
 }
 
 impl LoggerThread {
@@ -316,8 +350,12 @@ impl LoggerThread {
                     if let Some(outcome) = self.handle(msg) {
                         return outcome;
                     }
+                    self.watch_outputs();
                 }
-                Err(RecvTimeoutError::Timeout) => self.idle(),
+                Err(RecvTimeoutError::Timeout) => {
+                    self.idle();
+                    self.watch_outputs();
+                }
                 Err(RecvTimeoutError::Disconnected) => return lost_solver_outcome(),
             }
         }
@@ -343,12 +381,45 @@ impl LoggerThread {
         self.progress.update(&s);
         if let Some(w) = &mut self.csv {
             if let Err(e) = w.write(&s) {
-                self.errors.push(format!("{e:#}"));
-                self.csv = None;
+                self.csv = None; // dropped unfinished: its temporary file is removed
+                self.fail(e);
             }
         }
         let result = self.viewer.as_mut().map(|v| v.step(s));
         self.note(result);
+    }
+
+    /// An output failed: keep the reason, drop nothing else, and have the solver stop.
+    fn fail(&mut self, e: OutputError) {
+        let line = e.to_string();
+        let mut g = self
+            .shared
+            .failure
+            .lock()
+            .unwrap_or_else(|e| e.into_inner());
+        g.get_or_insert_with(|| line.clone());
+        self.shared.failed.store(true, Ordering::SeqCst);
+        drop(g);
+        if !self.errors.contains(&line) {
+            self.errors.push(line);
+        }
+    }
+
+    /// Notices a failed .rrd write at once, and every second a file removed from under us.
+    fn watch_outputs(&mut self) {
+        let mut found = self.viewer.as_ref().and_then(Viewer::output_error);
+        if found.is_none() && self.last_check.elapsed() >= LINK_CHECK_EVERY {
+            self.last_check = Instant::now();
+            found = self.viewer.as_ref().and_then(Viewer::check_outputs);
+            if let (Some(link), Some(w)) = (&self.csv_link, &self.csv) {
+                if let Err(reason) = link.verify() {
+                    found = Some(w.fail(reason));
+                }
+            }
+        }
+        if let Some(e) = found {
+            self.fail(e);
+        }
     }
 
     fn field(&mut self, f: &FieldSnapshot) {
@@ -368,7 +439,8 @@ impl LoggerThread {
         }
     }
 
-    /// Finalises every output, whatever happened before.
+    /// Finalises every output, whatever happened before: each complete one is renamed into
+    /// place; each that failed is removed and named in `errors`.
     fn finish(mut self, outcome: RunOutcome) -> anyhow::Result<LoggerReport> {
         let skipped = self.shared.fields_skipped.load(Ordering::Relaxed);
         self.progress.finish(outcome.status.name());
@@ -377,16 +449,19 @@ impl LoggerThread {
             .viewer
             .take()
             .map(|v| v.finish(&outcome, &stats, &mut self.errors));
-        let csv = match self.csv.take().map(CsvWriter::finish) {
+        let csv = match self.csv.take().map(|w| w.finish(&outcome.status)) {
             Some(Ok(r)) => Some(r),
             Some(Err(e)) => {
-                self.errors.push(format!("{e:#}"));
+                self.errors.push(e.to_string());
                 None
             }
             None => None,
         };
-        if !self.errors.is_empty() {
-            anyhow::bail!("{}", self.errors.join("; "));
+        let mut errors: Vec<String> = Vec::new();
+        for e in self.errors.drain(..) {
+            if !errors.contains(&e) {
+                errors.push(e); // an output that failed mid-run fails its commit the same way
+            }
         }
         let (rrd, connect, server, notes) = match viewer {
             Some(v) => (v.rrd, v.connect, v.server, v.notes),
@@ -401,6 +476,7 @@ impl LoggerThread {
             serve_url: self.serve_url,
             connect,
             notes,
+            errors,
             server,
         })
     }

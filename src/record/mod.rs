@@ -4,16 +4,17 @@
 //! # Contract with the solver
 //!
 //! ```ignore
-//! let opts = cli_args.record.resolve(case, t_end)?;        // validated, before anything runs
+//! let opts = cli_args.record.resolve(case, t_end, &[("--summary", p)])?; // checked first
 //! let mut logger = record::spawn_logger(opts, run_info)?;  // opens sinks, starts the thread
 //! loop {
 //!     /* advance one step */
-//!     logger.step(sample)?;                  // blocking send: time series are never dropped
+//!     logger.step(sample)?;                  // blocking send (never dropped); fails if an output failed
 //!     if logger.field_due(sample.t) {        // the field cadence (--field-every)
 //!         logger.offer_field(snapshot);      // non-blocking; false = skipped (counted)
 //!     }
 //! }
-//! let report = logger.finish(outcome)?;      // writes, finalises the .rrd, flushes the CSV
+//! let report = logger.finish(outcome)?;      // finalises and renames every complete output
+//! for e in &report.errors { eprintln!("error: {e}"); } // outputs that could not be written
 //! for line in report.lines() { eprintln!("{line}"); }
 //! report.serve_until_interrupted(&stop)?;    // --serve: keep serving until Ctrl-C sets `stop`
 //! ```
@@ -30,9 +31,19 @@
 //!
 //! # Sinks (any combination in one run)
 //!
-//! - `--save FILE.rrd` (default `recordings/<case>.rrd`; `--no-save` for none): Rerun's
-//!   `FileSink` (LZ4-compressed chunks). Its footer is written when it is finalised at
-//!   `finish`, on every exit path, so `rerun rrd verify` passes.
+//! - `--save FILE.rrd` (default `recordings/<case>.rrd`; `--no-save` for none): Rerun's encoder
+//!   (LZ4-compressed chunks) writing through [`output::PendingFile`] under a temporary name
+//!   (`viewer/rrd_file.rs`); a write error stops the run; at `finish` the footer is written and
+//!   the file renamed into place, on every exit path but a kill, so `rerun rrd verify` passes on
+//!   every .rrd at a final name.
+//!
+//! # Outputs and failures
+//!
+//! Every output (recording, CSV, and the summary the command line writes) goes through
+//! [`output::PendingFile`]: temporary name, sync, rename when complete. The logger notices a
+//! failed write at once and a file removed from under it within a second
+//! ([`LoggerReport::errors`], [`Logger::output_failure`]); [`Logger::step`] then fails, so the
+//! solver stops instead of computing what cannot be kept.
 //! - `--serve [--bind 127.0.0.1] [--port 9876] [--server-memory-limit 25%]`: a gRPC server
 //!   (`GrpcServerSink`); viewers run `rerun rerun+http://HOST:PORT/proxy`, also after the run
 //!   (history kept up to the memory limit), until Ctrl-C.
@@ -106,9 +117,11 @@
 //!   `--t-end` / `--turns`, since the per-step series dominate.
 pub mod csv;
 pub mod files;
+pub mod inject;
 pub mod logger;
 pub mod messages;
 pub mod options;
+pub mod output;
 mod progress;
 #[cfg(feature = "viewer")]
 pub mod viewer;
@@ -116,7 +129,7 @@ pub mod viewer;
 #[path = "viewer_off.rs"]
 pub mod viewer;
 
-pub use csv::CSV_HEADER;
+pub use csv::{CSV_HEADER, CSV_TRAILER};
 pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use super::messages::{RunInfo, RunOutcome};
 use super::options::RecordOptions;
+use super::output::OutputError;
 use crate::sim::{FieldSnapshot, StepSample};
 
 /// This build cannot record for Rerun.
@@ -53,6 +54,12 @@ impl Viewer {
         match *self {}
     }
     pub fn connect_report(&self) -> Option<ConnectReport> {
+        match *self {}
+    }
+    pub fn output_error(&self) -> Option<OutputError> {
+        match *self {}
+    }
+    pub fn check_outputs(&self) -> Option<OutputError> {
         match *self {}
     }
     pub fn finish(self, _o: &RunOutcome, _stats: &str, _errors: &mut Vec<String>) -> ViewerReport {

@@ -20,11 +20,15 @@
 //! }
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+pub mod checks;
+pub mod estimate;
+pub mod history;
 pub mod motion;
 pub mod output;
 pub mod spec;
 pub mod timestep;
 
+pub use history::{History, Quantity};
 pub use motion::Case;
 pub use output::{FieldSnapshot, RunRecord, RunStatus, StepSample};
 pub use spec::{BodyConfig, ReferenceScales, RunConfig, TimeControl};
@@ -273,7 +277,7 @@ impl Simulation {
 
     /// Runs to the end, reporting every step to `obs`.
     pub fn run(&mut self, obs: &mut dyn Observer) -> RunRecord {
-        let mut samples = Vec::new();
+        let mut samples = History::default();
         let status = loop {
             if obs.should_stop() {
                 break RunStatus::Interrupted;

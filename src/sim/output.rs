@@ -1,5 +1,6 @@
 //! What a run produces, as the solver's own plain-data types: one sample per step, field
 //! snapshots, and how the run ended. Nothing here knows about files or viewers.
+use super::history::History;
 use crate::flow::Frame;
 
 /// One time step's scalars.
@@ -57,15 +58,19 @@ pub enum RunStatus {
     Diverged(String),
     /// Stopped from outside (the observer asked to stop: Ctrl-C).
     Interrupted,
+    /// Stopped because an output could not be written (disk full, file removed, …); the message
+    /// names the output.
+    OutputFailed(String),
 }
 
 impl RunStatus {
-    /// "completed", "diverged" or "interrupted".
+    /// "completed", "diverged", "interrupted" or "output_failed".
     pub fn name(&self) -> &'static str {
         match self {
             RunStatus::Completed => "completed",
             RunStatus::Diverged(_) => "diverged",
             RunStatus::Interrupted => "interrupted",
+            RunStatus::OutputFailed(_) => "output_failed",
         }
     }
 }
@@ -73,7 +78,10 @@ impl RunStatus {
 /// How a run ended, with its time series.
 pub struct RunRecord {
     pub status: RunStatus,
-    pub samples: Vec<StepSample>,
+    /// The per-step history, bounded in memory: it dereferences to the retained samples
+    /// (`&[StepSample]`, every step until it is full, then evenly thinned) and keeps exact
+    /// running integrals and extremes of every step; see [`History`].
+    pub samples: History,
     /// Time of release (coupled cases) or of the end of spin-up (forced); 0 for static.
     pub t_release: f64,
     pub cells: usize,

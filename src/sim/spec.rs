@@ -101,6 +101,7 @@ impl RunConfig {
             check_range(Param::Turns, n, 0.0, 1e4, true)?;
         }
         self.validate_case()?;
+        super::checks::check_phases(self)?;
         if self.case.is_coupled() {
             let b = self.body.as_ref().ok_or(InputError::MissingPlate)?;
             check_range(Param::Mass, b.props.mass, 0.0, 1e6, true)?;

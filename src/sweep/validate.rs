@@ -74,7 +74,7 @@ pub fn summary_keys(argv: &[String]) -> Result<Vec<String>, String> {
     let config = config_of(argv)?;
     let empty = RunRecord {
         status: crate::sim::RunStatus::Completed,
-        samples: Vec::new(),
+        samples: Default::default(),
         t_release: 0.0,
         cells: 0,
     };

@@ -5,6 +5,7 @@ mod blueprint;
 mod curves;
 mod images;
 mod layout;
+mod rrd_file;
 mod scene;
 mod sinks;
 mod statics;
@@ -21,8 +22,10 @@ use rerun::RecordingStream;
 
 use super::messages::{RunInfo, RunOutcome};
 use super::options::RecordOptions;
+use super::output::OutputError;
 use crate::sim::{FieldSnapshot, StepSample};
 pub use layout::paths;
+use rrd_file::RrdFile;
 use scene::Scene;
 use sinks::{open_sinks, ConnectStats};
 
@@ -68,7 +71,7 @@ impl LiveServer {
 pub struct Viewer {
     rec: RecordingStream,
     scene: Option<Scene>,
-    save: Option<PathBuf>,
+    rrd: Option<Arc<RrdFile>>,
     serving: bool,
     connect: Option<(String, Arc<ConnectStats>)>,
     notes: Vec<String>,
@@ -99,7 +102,7 @@ impl Viewer {
         Ok(Viewer {
             rec,
             scene: Some(scene),
-            save: opts.save.clone(),
+            rrd: set.rrd,
             serving: set.serve_url.is_some(),
             connect: set.connect,
             notes: set.notes,
@@ -144,8 +147,18 @@ impl Viewer {
         })
     }
 
-    /// Logs the outcome and `stats_md`, finalises the file (its footer) and keeps the --serve
-    /// server up unless an error happened (`errors` gains what went wrong).
+    /// The first write error of the .rrd file so far (cheap).
+    pub fn output_error(&self) -> Option<OutputError> {
+        self.rrd.as_ref().and_then(|f| f.error())
+    }
+
+    /// Checks that the .rrd file being written is still on disk.
+    pub fn check_outputs(&self) -> Option<OutputError> {
+        self.rrd.as_ref().and_then(|f| f.check())
+    }
+
+    /// Logs the outcome and `stats_md`, commits the file (footer, sync, rename) and keeps the
+    /// --serve server up unless an error happened (`errors` gains what went wrong).
     pub fn finish(
         mut self,
         outcome: &RunOutcome,
@@ -156,9 +169,13 @@ impl Viewer {
             errors.push(e);
         }
         self.scene = None;
-        let _ = self.rec.flush_with_timeout(Duration::from_secs(30));
-        self.rec.finalize_deferred_sinks();
-        let rrd = self.save.as_ref().and_then(|path| file_size(path, errors));
+        let rrd = match self.rrd.take() {
+            Some(file) => commit_file(&self.rec, &file, errors),
+            None => {
+                let _ = self.rec.flush_with_timeout(FLUSH_LIMIT);
+                None
+            }
+        };
         let connect = self.connect_report();
         let mut notes = self.notes;
         if let Some(c) = &connect {
@@ -174,19 +191,28 @@ impl Viewer {
     }
 }
 
-/// The size of the finalised file, or an error if it is missing or empty.
-fn file_size(path: &PathBuf, errors: &mut Vec<String>) -> Option<(PathBuf, u64)> {
-    match std::fs::metadata(path) {
-        Ok(m) if m.len() > 0 => Some((path.clone(), m.len())),
-        Ok(_) => {
-            errors.push(format!("--save {}: the file is empty", path.display()));
-            None
-        }
-        Err(e) => {
-            errors.push(format!("--save {}: {e}", path.display()));
-            None
-        }
-    }
+/// Longest the end of a run waits for the recording to reach its sinks.
+const FLUSH_LIMIT: Duration = Duration::from_secs(30);
+
+/// Flushes the stream into the file and commits it; the file's name and size, or None with the
+/// reason in `errors` (then nothing is left at the final name).
+fn commit_file(
+    rec: &RecordingStream,
+    file: &RrdFile,
+    errors: &mut Vec<String>,
+) -> Option<(PathBuf, u64)> {
+    let before = file.flushes();
+    let _ = rec.flush_with_timeout(FLUSH_LIMIT);
+    let result = if file.flushes() > before {
+        file.commit()
+    } else {
+        file.discard();
+        Err(file.fail(format!(
+            "the recording did not reach the file within {} s",
+            FLUSH_LIMIT.as_secs()
+        )))
+    };
+    result.map_err(|e| errors.push(e.to_string())).ok()
 }
 
 /// A note for the report when the --connect viewer missed messages.

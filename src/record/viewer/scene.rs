@@ -367,6 +367,7 @@ impl Scene {
             RunStatus::Completed => (TextLogLevel::INFO, "completed".to_string()),
             RunStatus::Diverged(msg) => (TextLogLevel::ERROR, format!("diverged: {msg}")),
             RunStatus::Interrupted => (TextLogLevel::WARN, "interrupted (Ctrl-C)".to_string()),
+            RunStatus::OutputFailed(msg) => (TextLogLevel::ERROR, format!("output failed: {msg}")),
         };
         self.status(step, t, level, &line)?;
         self.rec.log_static(

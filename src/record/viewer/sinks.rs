@@ -1,8 +1,8 @@
 //! The Rerun sinks of one run: file, gRPC server (--serve), gRPC client (--connect / --spawn).
 //!
-//! All sinks hang off one `RecordingStream` through a `MultiSink`, so each message is encoded
-//! once per sink and the file is finalised on its own with `finalize_deferred_sinks()` while the
-//! server keeps serving.
+//! All sinks hang off one `RecordingStream` through a `MultiSink`. The file is our own
+//! [`RrdSink`] (`rrd_file.rs`): written under a temporary name, its errors seen by the logger,
+//! committed on its own while the server keeps serving.
 //!
 //! The gRPC *client* (`GrpcSink`) blocks its caller once its queue (100 messages) fills while no
 //! viewer is listening, and its `Drop` flushes with no time limit. Both would stall the file sink
@@ -20,6 +20,7 @@ use crossbeam_channel::{bounded, Receiver, Sender, TrySendError};
 use rerun::log::LogMsg;
 use rerun::sink::{GrpcSink, GrpcSinkConnectionState, LogSink, SinkFlushError};
 
+use super::rrd_file::{RrdFile, RrdSink};
 use crate::record::options::RecordOptions;
 
 /// Messages queued for a --connect viewer before further ones are dropped.
@@ -172,6 +173,8 @@ impl Drop for DetachedGrpcSink {
 /// The sinks of a run and how to report on them.
 pub(crate) struct SinkSet {
     pub sinks: Vec<Box<dyn LogSink>>,
+    /// The .rrd file being written (--save).
+    pub rrd: Option<Arc<RrdFile>>,
     /// URL viewers open for --serve.
     pub serve_url: Option<String>,
     /// Where --connect / --spawn streams, and its counters.
@@ -184,14 +187,15 @@ pub(crate) struct SinkSet {
 pub(crate) fn open_sinks(opts: &RecordOptions) -> anyhow::Result<SinkSet> {
     let mut set = SinkSet {
         sinks: Vec::new(),
+        rrd: None,
         serve_url: None,
         connect: None,
         notes: Vec::new(),
     };
     if let Some(path) = &opts.save {
-        let sink = rerun::sink::FileSink::new(path)
-            .map_err(|e| anyhow::anyhow!("--save {}: {e}", path.display()))?;
-        set.sinks.push(Box::new(sink));
+        let file = RrdFile::create(path)?;
+        set.sinks.push(Box::new(RrdSink(file.clone())));
+        set.rrd = Some(file);
     }
     if let Some(serve) = &opts.serve {
         let memory_limit = rerun::MemoryLimit::parse(&serve.memory_limit)

@@ -1,0 +1,310 @@
+//! Every output file (recording, CSV, summary, bench JSON) is written through a [`PendingFile`]:
+//! under a temporary name in its own directory (`.NAME.partial-PID`), synced, checked, and renamed
+//! to its final name only when complete. A file at its final name is therefore always complete;
+//! a run that ends early writes what it has and says so inside the file before the rename.
+//!
+//! What is left on disk after each kind of failure:
+//! - a write error (disk full, I/O error), an output removed while being written, a failed sync or
+//!   rename: the temporary file is removed and nothing appears at the final name
+//!   ([`OutputError`] says what happened; the command exits with code 4);
+//! - the process killed (SIGKILL, a second Ctrl-C, power loss): the temporary
+//!   `.NAME.partial-PID` file stays, clearly partial, and the final name is untouched.
+use std::fs::File;
+use std::io::{self, BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+use super::files::resolve_links;
+use super::inject;
+
+/// An output could not be written: which option, which file, and why (one line).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{label} {}: {reason}", .path.display())]
+pub struct OutputError {
+    /// The option that names the file, e.g. "--csv".
+    pub label: &'static str,
+    /// The final name of the file.
+    pub path: PathBuf,
+    pub reason: String,
+}
+
+impl OutputError {
+    pub fn new(label: &'static str, path: &Path, reason: impl Into<String>) -> Self {
+        OutputError {
+            label,
+            path: path.to_path_buf(),
+            reason: reason.into(),
+        }
+    }
+}
+
+/// The temporary name of an output: `.NAME.partial-PID` beside its final name.
+pub fn partial_path(final_path: &Path) -> PathBuf {
+    let name = final_path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "output".into());
+    final_path.with_file_name(format!(".{name}.partial-{}", std::process::id()))
+}
+
+/// Identifies the temporary file on disk, to notice when it is removed (or its directory is)
+/// while it is being written; see [`LinkCheck::verify`].
+#[derive(Clone, Debug)]
+pub struct LinkCheck {
+    path: PathBuf,
+    #[cfg(unix)]
+    id: (u64, u64),
+}
+
+impl LinkCheck {
+    fn of(file: &File, path: &Path) -> io::Result<Self> {
+        #[cfg(unix)]
+        let id = {
+            use std::os::unix::fs::MetadataExt as _;
+            let m = file.metadata()?;
+            (m.dev(), m.ino())
+        };
+        #[cfg(not(unix))]
+        let _ = file;
+        Ok(LinkCheck {
+            path: path.to_path_buf(),
+            #[cfg(unix)]
+            id,
+        })
+    }
+
+    /// Fails if the temporary file is no longer at its path (deleted, or its directory removed
+    /// or renamed): the output could never be renamed into place.
+    pub fn verify(&self) -> Result<(), String> {
+        let m = std::fs::metadata(&self.path).map_err(|e| {
+            format!(
+                "the file being written ({}) disappeared ({e}); was its directory removed?",
+                self.path.display()
+            )
+        })?;
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt as _;
+            if (m.dev(), m.ino()) != self.id {
+                return Err(format!(
+                    "the file being written ({}) was replaced by another",
+                    self.path.display()
+                ));
+            }
+        }
+        #[cfg(not(unix))]
+        let _ = m;
+        Ok(())
+    }
+}
+
+/// An output file being written under its temporary name; see the module docs.
+///
+/// `Write` calls fail after the first error (which is kept). Dropping it without
+/// [`commit`](Self::commit) removes the temporary file.
+#[derive(Debug)]
+pub struct PendingFile {
+    label: &'static str,
+    /// The final name as given (for messages).
+    final_path: PathBuf,
+    /// The file it really names (symbolic links resolved): the rename's target.
+    target_path: PathBuf,
+    temp_path: PathBuf,
+    out: Option<BufWriter<File>>,
+    written: u64,
+    error: Option<String>,
+    link: LinkCheck,
+}
+
+impl PendingFile {
+    /// Creates the temporary file for the output `label` (e.g. "--csv") at `final_path`.
+    pub fn create(label: &'static str, final_path: &Path) -> Result<Self, OutputError> {
+        let real = resolve_links(final_path);
+        let temp_path = partial_path(&real);
+        let fail =
+            |e: io::Error| OutputError::new(label, final_path, format!("cannot create: {e}"));
+        let file = File::create(&temp_path).map_err(fail)?;
+        let link = LinkCheck::of(&file, &temp_path).map_err(fail)?;
+        Ok(PendingFile {
+            label,
+            final_path: final_path.to_path_buf(),
+            target_path: real,
+            temp_path,
+            out: Some(BufWriter::with_capacity(1 << 16, file)),
+            written: 0,
+            error: None,
+            link,
+        })
+    }
+
+    /// The final name, as given.
+    pub fn final_path(&self) -> &Path {
+        &self.final_path
+    }
+
+    /// The temporary name the bytes go to until the commit.
+    pub fn temp_path(&self) -> &Path {
+        &self.temp_path
+    }
+
+    /// A handle that checks, from any thread, that the temporary file is still there.
+    pub fn link_check(&self) -> LinkCheck {
+        self.link.clone()
+    }
+
+    /// The first error, if a write has failed.
+    pub fn error(&self) -> Option<OutputError> {
+        self.error.as_ref().map(|r| self.fail(r.clone()))
+    }
+
+    /// An error about this output.
+    pub fn fail(&self, reason: impl Into<String>) -> OutputError {
+        OutputError::new(self.label, &self.final_path, reason)
+    }
+
+    /// Flushes, syncs and checks the file, then renames it to its final name. Returns the final
+    /// name (as given) and the size. On any failure the temporary file is removed.
+    pub fn commit(mut self) -> Result<(PathBuf, u64), OutputError> {
+        let result = self.finish_writing();
+        if let Err(reason) = result {
+            return Err(self.fail(reason));
+        }
+        inject::commit_delay();
+        std::fs::rename(&self.temp_path, &self.target_path)
+            .map_err(|e| self.fail(format!("cannot rename the finished file into place: {e}")))?;
+        self.out = None; // committed: nothing to remove on drop
+        sync_directory(&self.target_path);
+        Ok((self.final_path.clone(), self.written))
+    }
+
+    /// Flushes and syncs the data and checks that the file holds every byte written.
+    fn finish_writing(&mut self) -> Result<(), String> {
+        if let Some(e) = &self.error {
+            return Err(e.clone());
+        }
+        let out = self
+            .out
+            .as_mut()
+            .ok_or_else(|| "already committed".to_string())?;
+        out.flush().map_err(|e| format!("write failed: {e}"))?;
+        let file = out.get_ref();
+        file.sync_all().map_err(|e| format!("sync failed: {e}"))?;
+        let size = file.metadata().map_err(|e| e.to_string())?.len();
+        if size != self.written {
+            return Err(format!(
+                "the file holds {size} bytes of the {} written",
+                self.written
+            ));
+        }
+        self.link.verify()
+    }
+}
+
+impl Write for PendingFile {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        if let Some(e) = &self.error {
+            return Err(io::Error::other(e.clone()));
+        }
+        let out = self
+            .out
+            .as_mut()
+            .ok_or_else(|| io::Error::other("committed"))?;
+        let result = inject::reserve(buf.len()).and_then(|()| out.write(buf));
+        match result {
+            Ok(n) => {
+                self.written += n as u64;
+                Ok(n)
+            }
+            Err(e) => {
+                self.error = Some(format!("write failed: {e}"));
+                Err(e)
+            }
+        }
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        let out = self
+            .out
+            .as_mut()
+            .ok_or_else(|| io::Error::other("committed"))?;
+        out.flush().inspect_err(|e| {
+            self.error.get_or_insert(format!("write failed: {e}"));
+        })
+    }
+}
+
+impl Drop for PendingFile {
+    fn drop(&mut self) {
+        if self.out.take().is_some() {
+            let _ = std::fs::remove_file(&self.temp_path);
+        }
+    }
+}
+
+/// Makes a rename durable (best effort: not every file system can sync a directory).
+fn sync_directory(path: &Path) {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if let Ok(d) = File::open(dir) {
+        let _ = d.sync_all();
+    }
+}
+
+/// Writes a whole small file (summary, bench JSON) atomically; returns its size.
+pub fn write_atomically(
+    label: &'static str,
+    path: &Path,
+    bytes: &[u8],
+) -> Result<u64, OutputError> {
+    let mut f = PendingFile::create(label, path)?;
+    if let Err(e) = f.write_all(bytes) {
+        return Err(f.fail(format!("write failed: {e}")));
+    }
+    f.commit().map(|(_, n)| n)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn dir(name: &str) -> PathBuf {
+        let d = std::env::temp_dir().join(format!("pf-output-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        d
+    }
+
+    #[test]
+    fn nothing_appears_at_the_final_name_before_the_commit() {
+        let d = dir("commit");
+        let target = d.join("a.csv");
+        let mut f = PendingFile::create("--csv", &target).unwrap();
+        f.write_all(b"x,y\n1,2\n").unwrap();
+        assert!(!target.exists());
+        assert!(f.temp_path().exists());
+        let temp = f.temp_path().to_path_buf();
+        assert_eq!(f.commit().unwrap(), (target.clone(), 8));
+        assert_eq!(std::fs::read_to_string(&target).unwrap(), "x,y\n1,2\n");
+        assert!(!temp.exists());
+        let _ = std::fs::remove_dir_all(&d);
+    }
+
+    #[test]
+    fn an_abandoned_or_orphaned_file_leaves_nothing_at_its_final_name() {
+        let d = dir("orphan");
+        let target = d.join("b.json");
+        let f = PendingFile::create("--summary", &target).unwrap();
+        let temp = f.temp_path().to_path_buf();
+        drop(f);
+        assert!(!temp.exists() && !target.exists());
+        let mut f = PendingFile::create("--summary", &target).unwrap();
+        f.write_all(b"{}").unwrap();
+        std::fs::remove_file(f.temp_path()).unwrap();
+        assert!(f.link_check().verify().is_err());
+        let e = f.commit().unwrap_err();
+        assert!(e.to_string().starts_with("--summary "), "{e}");
+        assert!(!target.exists());
+        let _ = std::fs::remove_dir_all(&d);
+    }
+}

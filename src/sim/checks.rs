@@ -1,0 +1,56 @@
+//! Checks across the values of a run description that are each in range alone but cannot work
+//! together (SPEC §1, §6): a run must outlast the plate's development (pinned, free) or spin-up
+//! (forced), or it ends before the case begins.
+use super::motion::Case;
+use super::spec::RunConfig;
+use crate::param::{InputError, Param};
+
+/// Refuses a development or spin-up that lasts the whole run.
+pub fn check_phases(config: &RunConfig) -> Result<(), InputError> {
+    let t_end = config.time.t_end;
+    let (param, value, what) = match config.case {
+        Case::Pinned { develop, .. } | Case::Free { develop, .. } => (
+            Param::Develop,
+            develop,
+            "the plate would be held until then and never released",
+        ),
+        Case::Forced { spinup, .. } => (
+            Param::Spinup,
+            spinup,
+            "the spin-up would take the whole run",
+        ),
+        Case::Static { .. } => return Ok(()),
+    };
+    if value < t_end {
+        return Ok(());
+    }
+    Err(InputError::Inconsistent {
+        param,
+        value,
+        why: format!(
+            "the run ends at t_end = {t_end}, so {what}; accepted: less than t_end (--t-end)"
+        ),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::grid::GridSpec;
+
+    #[test]
+    fn phases_longer_than_the_run_are_refused() {
+        let mut c = RunConfig::new(
+            Case::Forced {
+                omega: 1.0,
+                spinup: 3.0,
+            },
+            GridSpec::modern(8),
+        );
+        c.time.t_end = 2.0;
+        let e = check_phases(&c).unwrap_err();
+        assert_eq!(e.param(), Some(Param::Spinup));
+        c.time.t_end = 4.0;
+        assert!(check_phases(&c).is_ok());
+    }
+}
