@@ -88,7 +88,8 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
     } else {
         config.time.t_end
     };
-    let opts = record_args.resolve(config.case.name(), progress_end)?;
+    let mut opts = record_args.resolve(config.case.name(), progress_end)?;
+    opts.view.plot_ranges = Some(crate::post::PlotRanges::for_config(&config));
     if let Some(b) = &config.body {
         if let Some(advice) = crate::body::coupling_advice(&b.props) {
             eprintln!("warning: {advice}");

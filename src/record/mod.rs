@@ -110,6 +110,7 @@ pub mod logger;
 pub mod messages;
 pub mod options;
 mod progress;
+pub mod view_options;
 #[cfg(feature = "viewer")]
 pub mod viewer;
 #[cfg(not(feature = "viewer"))]
@@ -121,6 +122,7 @@ pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
 };
+pub use view_options::{ViewOptions, DEFAULT_WAKE_RES};
 pub use viewer::ConnectReport;
 #[cfg(feature = "viewer")]
 pub use viewer::{paths, APPLICATION_ID};

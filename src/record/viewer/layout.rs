@@ -21,8 +21,15 @@ pub mod paths {
     pub const PLATE: &str = "/world/plate";
     pub const OUTLINE: &str = "/world/plate/outline";
     pub const STREAMLINES: &str = "/world/plate/streamlines";
-    /// Field images under `PLATE`.
+    /// Field images under `PLATE` (the close-up, body axes) and `WAKE` (path frame).
     pub const FIELDS: &[&str] = &["vorticity", "pressure", "speed"];
+    /// The wake window's frame at each snapshot: Transform3D translation (X, Y) and rotation by
+    /// the path heading; its field images are in path-frame coordinates.
+    pub const WAKE: &str = "/world/wake";
+    /// The plate at each snapshot, drawn in the path frame.
+    pub const WAKE_PLATE: &str = "/world/wake/plate";
+    /// The path frame with Y mirrored for the screen (origin of the wake views).
+    pub const WAKE_SCREEN: &str = "/world/wake/screen";
     pub const TRAJECTORY: &str = "/world/trajectory";
     pub const STROBE: &str = "/world/strobe";
     pub const COEFFICIENTS: &str = "/coefficients";
@@ -92,5 +99,14 @@ pub(super) const POLAR_CLIP: f64 = 10.0;
 /// Convective time between points of the trajectory and the polar curves.
 pub(super) const SAMPLE_EVERY: f64 = 0.02;
 
-/// Colour-scale steps kept in the images: (upper − lower) / IMAGE_LEVELS.
+/// Colour-scale steps kept in the close-up images: (upper − lower) / IMAGE_LEVELS.
 pub(super) const IMAGE_LEVELS: f64 = 1024.0;
+/// The same for the wake images: as many steps as a colour map shows (the picture is the same),
+/// and runs of equal values in smooth regions for LZ4 (vorticity to 0.08 on hover).
+pub(super) const WAKE_IMAGE_LEVELS: f64 = 256.0;
+
+/// The rotation by `angle` (radians, counter-clockwise) about z as a quaternion (x, y, z, w).
+pub(super) fn z_rotation(angle: f64) -> [f32; 4] {
+    let (sin, cos) = (0.5 * angle).sin_cos();
+    [0.0, 0.0, sin as f32, cos as f32]
+}

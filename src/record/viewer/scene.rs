@@ -7,18 +7,18 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use rerun::components::{Radius, TextLogLevel};
-use rerun::datatypes::ChannelDatatype;
 use rerun::{
-    Color, DepthImage, LineStrips2D, RecordingStream, Scalars, TextDocument, TextLog, TimeColumn,
-    Transform3D,
+    Color, LineStrips2D, RecordingStream, Scalars, TextDocument, TextLog, TimeColumn, Transform3D,
 };
 
+use super::blueprint::{send_default_blueprint, ViewFit};
 use super::curves::{plate_outline, SegmentedCurve};
-use super::images::f16_bytes;
+use super::images::log_field_images;
 use super::layout::*;
-use super::statics::log_static;
+use super::statics::{log_static, window_reach};
 use super::text::summary_markdown;
-use crate::post::{FieldPainter, ImageGrid, PainterOptions};
+use super::wake::WakeScene;
+use crate::post::{default_wake_window, FieldPainter, ImageGrid, PainterOptions, SnapshotFields};
 use crate::record::messages::{RunInfo, RunOutcome};
 use crate::record::options::RecordOptions;
 use crate::sim::{FieldSnapshot, RunStatus, StepSample};
@@ -28,6 +28,7 @@ pub(crate) struct Scene {
     rec: RecordingStream,
     painter: FieldPainter,
     image: ImageGrid,
+    wake: WakeScene,
     thickness: f64,
     strobe_every: f64,
     pending: Vec<StepSample>,
@@ -50,13 +51,28 @@ pub(crate) struct Scene {
 }
 
 impl Scene {
-    /// Logs everything static (frames, the plate, styles, the configuration) and the first
-    /// status line.
+    /// Sends the blueprint, logs everything static (frames, the plate, styles, the
+    /// configuration) and the first status line.
     pub fn start(
         rec: RecordingStream,
         info: &RunInfo,
         opts: &RecordOptions,
     ) -> rerun::RecordingStreamResult<Self> {
+        let wake_window =
+            (opts.view.wake_window).unwrap_or_else(|| default_wake_window(&info.case));
+        let fit = ViewFit {
+            closeup_reach: window_reach(&opts.field_window),
+            wake: wake_window,
+            plots: opts.view.plot_ranges,
+        };
+        send_default_blueprint(&rec, &fit)?;
+        let wake = WakeScene::new(
+            Arc::clone(&info.grid),
+            wake_window,
+            opts.view.wake_res,
+            opts.streamlines_frame,
+            info.thickness,
+        );
         let painter = FieldPainter::new(
             Arc::clone(&info.grid),
             PainterOptions {
@@ -75,23 +91,12 @@ impl Scene {
         };
         // At most ~40 segments per curve, at least 2 time units each.
         let seg_len = (t_end / 40.0).max(2.0);
-        let wrap = ALPHA_SCALE * std::f64::consts::PI;
-        let polars = [
-            (paths::POLAR_COEFFICIENTS, "cl", 0),
-            (paths::POLAR_COEFFICIENTS, "cd", 1),
-            (paths::POLAR_COEFFICIENTS, "cm", 2),
-            (paths::POLAR_MOTION, "speed", 3),
-            (paths::POLAR_MOTION, "omega", 4),
-        ]
-        .map(|(base, name, k)| {
-            SegmentedCurve::new(&format!("{base}/{name}"), seg_len, SERIES[k].2, 1.0, wrap)
-        })
-        .into();
         let live = opts.serve.is_some() || opts.connect.is_some() || opts.spawn;
         let inf = f64::INFINITY;
         let scene = Self {
             painter,
             image,
+            wake,
             thickness: info.thickness,
             strobe_every: if opts.strobe_every > 0.0 {
                 opts.strobe_every
@@ -109,7 +114,7 @@ impl Scene {
             last_flush: Instant::now(),
             trajectory: SegmentedCurve::new(paths::TRAJECTORY, seg_len, 0xF2A93BFF, 1.2, inf),
             strobe: SegmentedCurve::new(paths::STROBE, seg_len, 0xC8C8C8FF, 0.8, inf),
-            polars,
+            polars: polar_curves(seg_len),
             next_sample_t: f64::NEG_INFINITY,
             next_log_t: f64::NEG_INFINITY,
             log_every: opts.field_every.clamp(0.05, 1.0),
@@ -120,7 +125,7 @@ impl Scene {
             skipped_reported: 0,
             rec,
         };
-        log_static(&scene.rec, info, opts, &scene.image)?;
+        log_static(&scene.rec, info, opts, &scene.image, &scene.wake.image())?;
         let started = format!("started: {}", info.title);
         scene.status(0, 0.0, TextLogLevel::INFO, &started)?;
         Ok(scene)
@@ -149,6 +154,7 @@ impl Scene {
     /// Queues one step; sends the queue when it is full or old.
     pub fn step(&mut self, s: StepSample) -> rerun::RecordingStreamResult<()> {
         self.pending.push(s);
+        self.wake.step(&s);
         if s.t + 1e-9 >= self.next_pose_t {
             self.next_pose_t = s.t + POSE_EVERY;
             self.poses.push((s.step, s.t, s.x, s.y, s.theta));
@@ -249,13 +255,7 @@ impl Scene {
             ]
         };
         let translations: Vec<[f32; 3]> = p.iter().map(|s| [s.2 as f32, s.3 as f32, 0.0]).collect();
-        let quats: Vec<[f32; 4]> = p
-            .iter()
-            .map(|s| {
-                let h = 0.5 * s.4;
-                [0.0, 0.0, h.sin() as f32, h.cos() as f32]
-            })
-            .collect();
+        let quats: Vec<[f32; 4]> = p.iter().map(|s| z_rotation(s.4)).collect();
         self.rec.send_columns(
             paths::PLATE,
             index(),
@@ -295,26 +295,14 @@ impl Scene {
             )?;
             return Ok(false);
         }
-        let painted = self.painter.paint(snap);
+        let fields = SnapshotFields::new(self.painter.grid(), snap);
+        let painted = self.painter.paint_fields(snap, &fields);
         self.poses
             .push((snap.step, snap.t, snap.x, snap.y, snap.theta));
         self.set_time(snap.step, snap.t);
-        let img = self.image;
-        let size = [img.width as u32, img.height as u32];
-        for (data, (name, _, lo, hi)) in [&painted.vorticity, &painted.pressure, &painted.speed]
-            .into_iter()
-            .zip(FIELD_SCALES)
-        {
-            let quantum = ((hi - lo) / IMAGE_LEVELS) as f32;
-            self.rec.log(
-                format!("{}/{name}", paths::PLATE),
-                &DepthImage::from_data_type_and_bytes(
-                    f16_bytes(data, quantum),
-                    size,
-                    ChannelDatatype::F16,
-                ),
-            )?;
-        }
+        let images = [&painted.vorticity[..], &painted.pressure, &painted.speed];
+        log_field_images(&self.rec, paths::PLATE, images, &self.image, IMAGE_LEVELS)?;
+        self.wake.log(&self.rec, snap, &fields)?;
         let strips = painted
             .streamlines
             .iter()
@@ -375,4 +363,21 @@ impl Scene {
         )?;
         Ok(())
     }
+}
+
+/// The curves of the α plots (C_L, C_D, C_M; V, θ̇), in segments of `seg_len` time units; a jump
+/// in α by a whole turn breaks the line.
+fn polar_curves(seg_len: f64) -> Vec<SegmentedCurve> {
+    let wrap = ALPHA_SCALE * std::f64::consts::PI;
+    [
+        (paths::POLAR_COEFFICIENTS, "cl", 0),
+        (paths::POLAR_COEFFICIENTS, "cd", 1),
+        (paths::POLAR_COEFFICIENTS, "cm", 2),
+        (paths::POLAR_MOTION, "speed", 3),
+        (paths::POLAR_MOTION, "omega", 4),
+    ]
+    .map(|(base, name, k)| {
+        SegmentedCurve::new(&format!("{base}/{name}"), seg_len, SERIES[k].2, 1.0, wrap)
+    })
+    .into()
 }

@@ -12,7 +12,37 @@ fn code_block(lang: &str, body: &str) -> String {
     format!("{fence}{lang}\n{}\n{fence}\n", body.trim_end())
 }
 
-pub(super) fn config_markdown(info: &RunInfo, opts: &RecordOptions, img: &ImageGrid) -> String {
+/// The recording's own settings: the wake window and the plots' ranges.
+fn view_markdown(opts: &RecordOptions, wake: &ImageGrid) -> String {
+    let w = wake.window;
+    let plots = match opts.view.plot_ranges {
+        Some(r) => format!(
+            "coefficients open on [{:.2}, {:.2}], motion on [{:.2}, {:.2}] (zoom out for the start-up spike)",
+            r.coefficients[0], r.coefficients[1], r.motion[0], r.motion[1]
+        ),
+        None => "automatic ranges".to_string(),
+    };
+    format!(
+        "- **wake**: images {ww}×{wh} px over x in [{x0}, {x1}] along the path and y in [{y0}, {y1}] \
+         across it (chords; the plate at 0, the path's heading averaged over its last 4 chords).\n\
+         - **plots**: {plots}.\n",
+        ww = wake.width,
+        wh = wake.height,
+        x0 = w.x0,
+        x1 = w.x1,
+        y0 = w.y0,
+        y1 = w.y1,
+    )
+}
+
+/// The run configuration document: title, program, command line, recording settings, grid and
+/// the configuration JSON (`img` and `wake` are the close-up and wake image geometries).
+pub(super) fn config_markdown(
+    info: &RunInfo,
+    opts: &RecordOptions,
+    img: &ImageGrid,
+    wake: &ImageGrid,
+) -> String {
     let w = img.window;
     format!(
         "# {title}\n\n\
@@ -22,6 +52,7 @@ pub(super) fn config_markdown(info: &RunInfo, opts: &RecordOptions, img: &ImageG
          - **recording**: field snapshots every {fe} c/U; images {iw}×{ih} px over \
            x in [{x0}, {x1}], y in [{y0}, {y1}] (body axes, chords); streamlines and speed in frame \
            {fr} ({frd}); timelines `time` (convective time t·U/c, shown as seconds) and `step`.\n\
+         {view}\
          - **grid**: {nx} × {ny} cells; plate thickness {th} c.\n\n\
          ## Configuration\n\n{json}",
         title = info.title,
@@ -41,6 +72,7 @@ pub(super) fn config_markdown(info: &RunInfo, opts: &RecordOptions, img: &ImageG
         ny = info.grid.ny(),
         th = info.thickness,
         json = code_block("json", &info.config_json),
+        view = view_markdown(opts, wake),
     )
 }
 
