@@ -460,6 +460,13 @@ mod tests {
             (&["--field-res", "8"], "--field-res 8: must be in 16..=2048"),
             (&["--streamlines-frame", "5"], "--streamlines-frame 5"),
             (&["--field-window", "1,2,3"], "--field-window"),
+            (&["--wake-window", "-8,2,0,1"], "--wake-window"),
+            (&["--wake-window", "-16,2,-1,1"], "[-15, 15]"),
+            (
+                &["--wake-res", "4096"],
+                "--wake-res 4096: must be in 16..=2048",
+            ),
+            (&["--small", "--field-res", "8"], "--field-res 8"),
             (&["--save", "/nonexistent-dir-pf/x.rrd"], "does not exist"),
             (&["--save", "/tmp/x.txt"], "must end in .rrd"),
             (&["--csv", "/nonexistent-dir-pf/x.csv"], "--csv"),
@@ -478,6 +485,36 @@ mod tests {
             assert!(e.contains(expect), "{argv:?}: {e}");
             assert!(!e.contains('\n'), "one line: {e}");
         }
+    }
+
+    #[test]
+    fn small_sets_the_bug_report_setting_and_explicit_flags_win() {
+        let o = args(&["--no-save", "--small"])
+            .resolve("free", 1.0)
+            .unwrap();
+        assert_eq!((o.field_every, o.field_res), (SMALL_FIELD_EVERY, SMALL_RES));
+        assert_eq!(o.view.wake_res, SMALL_RES);
+        assert_eq!(o.view.wake_window, None);
+        let o = args(&[
+            "--no-save",
+            "--small",
+            "--field-res",
+            "200",
+            "--wake-res",
+            "96",
+        ])
+        .resolve("free", 1.0)
+        .unwrap();
+        assert_eq!(
+            (o.field_every, o.field_res, o.view.wake_res),
+            (0.5, 200, 96)
+        );
+        let o = args(&["--no-save", "--wake-window", "-6,1.5,-2,3"])
+            .resolve("static", 1.0)
+            .unwrap();
+        let w = o.view.wake_window.unwrap();
+        assert_eq!([w.x0, w.x1, w.y0, w.y1], [-6.0, 1.5, -2.0, 3.0]);
+        assert_eq!(o.view.wake_res, DEFAULT_WAKE_RES);
     }
 
     #[test]
