@@ -8,7 +8,7 @@ mod record_common;
 use std::path::PathBuf;
 use std::process::Command;
 
-use record_common::{decode, temp_dir, Decoded};
+use record_common::{decode, run_platefall, temp_dir, Decoded};
 use rerun::components::{ImageFormat, RotationQuat, Translation3D};
 
 /// Runs the binary with `args` plus `--save DIR/NAME.rrd`; returns the decoded recording and the
@@ -17,17 +17,14 @@ fn record(name: &str, args: &[&str]) -> (Decoded, Vec<[f64; 4]>) {
     let dir = temp_dir(&format!("view-{name}"));
     let rrd = dir.join(format!("{name}.rrd"));
     let csv = dir.join(format!("{name}.csv"));
-    let out = Command::new(env!("CARGO_BIN_EXE_platefall"))
-        .args(args)
-        .args(["--progress", "off", "--save", rrd.to_str().unwrap()])
-        .args(["--csv", csv.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let mut all: Vec<&str> = args.to_vec();
+    all.extend([
+        "--save",
+        rrd.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    run_platefall(&all);
     let rows = std::fs::read_to_string(&csv)
         .unwrap()
         .lines()

@@ -13,6 +13,21 @@ use platefall::sim::{FieldSnapshot, StepSample};
 use rerun::external::re_log_encoding::DecoderApp;
 use rerun::log::{Chunk, LogMsg};
 
+/// Runs the platefall binary with `args` (and `--progress off`); panics with its stderr unless
+/// it succeeds.
+pub fn run_platefall<S: AsRef<std::ffi::OsStr>>(args: &[S]) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_platefall"))
+        .args(args)
+        .args(["--progress", "off"])
+        .output()
+        .expect("the platefall binary runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 /// A fresh temporary directory for one test.
 pub fn temp_dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("platefall-{name}-{}", std::process::id()));

@@ -12,6 +12,11 @@ fn code_block(lang: &str, body: &str) -> String {
     format!("{fence}{lang}\n{}\n{fence}\n", body.trim_end())
 }
 
+/// "[lo, hi]".
+fn span(lo: f64, hi: f64) -> String {
+    format!("[{lo}, {hi}]")
+}
+
 /// The recording's own settings: the wake window and the plots' ranges.
 fn view_markdown(opts: &RecordOptions, wake: &ImageGrid) -> String {
     let w = wake.window;
@@ -23,15 +28,13 @@ fn view_markdown(opts: &RecordOptions, wake: &ImageGrid) -> String {
         None => "automatic ranges".to_string(),
     };
     format!(
-        "- **wake**: images {ww}×{wh} px over x in [{x0}, {x1}] along the path and y in [{y0}, {y1}] \
-         across it (chords; the plate at 0, the path's heading averaged over its last 4 chords).\n\
+        "- **wake**: images {ww}×{wh} px over x in {xs} along the path and y in {ys} across it \
+         (chords; the plate at 0, the path's heading averaged over its last 4 chords).\n\
          - **plots**: {plots}.\n",
         ww = wake.width,
         wh = wake.height,
-        x0 = w.x0,
-        x1 = w.x1,
-        y0 = w.y0,
-        y1 = w.y1,
+        xs = span(w.x0, w.x1),
+        ys = span(w.y0, w.y1),
     )
 }
 
@@ -50,7 +53,7 @@ pub(super) fn config_markdown(
          - **case**: {case}\n\
          - **command line**:\n\n{cmd}\n\
          - **recording**: field snapshots every {fe} c/U; images {iw}×{ih} px over \
-           x in [{x0}, {x1}], y in [{y0}, {y1}] (body axes, chords); streamlines and speed in frame \
+           x in {xs}, y in {ys} (body axes, chords); streamlines and speed in frame \
            {fr} ({frd}); timelines `time` (convective time t·U/c, shown as seconds) and `step`.\n\
          {view}\
          - **grid**: {nx} × {ny} cells; plate thickness {th} c.\n\n\
@@ -62,10 +65,8 @@ pub(super) fn config_markdown(
         fe = opts.field_every,
         iw = img.width,
         ih = img.height,
-        x0 = w.x0,
-        x1 = w.x1,
-        y0 = w.y0,
-        y1 = w.y1,
+        xs = span(w.x0, w.x1),
+        ys = span(w.y0, w.y1),
         fr = opts.streamlines_frame.number(),
         frd = opts.streamlines_frame.describe(),
         nx = info.grid.nx(),
