@@ -32,7 +32,8 @@ pub(crate) struct Scene {
     thickness: f64,
     strobe_every: f64,
     pending: Vec<StepSample>,
-    flush_every: Duration,
+    /// Longest a step waits before it is sent (None: file only, sent in full chunks).
+    flush_every: Option<Duration>,
     /// Plate poses waiting to be sent (every POSE_EVERY, and at every field snapshot).
     poses: Vec<(u64, f64, f64, f64, f64)>,
     next_pose_t: f64,
@@ -104,11 +105,7 @@ impl Scene {
                 0.5
             },
             pending: Vec::with_capacity(MAX_PENDING),
-            flush_every: if live {
-                STEP_FLUSH_LIVE
-            } else {
-                STEP_FLUSH_FILE
-            },
+            flush_every: live.then_some(STEP_FLUSH_LIVE),
             poses: Vec::new(),
             next_pose_t: f64::NEG_INFINITY,
             last_flush: Instant::now(),
@@ -162,15 +159,21 @@ impl Scene {
         self.steps_logged += 1;
         self.curves(&s)?;
         self.last = Some(s);
-        if self.pending.len() >= MAX_PENDING || self.last_flush.elapsed() >= self.flush_every {
+        if self.pending.len() >= MAX_PENDING || self.steps_are_stale() {
             self.flush_steps()?;
         }
         Ok(())
     }
 
+    /// True when a live viewer has waited long enough for the queued steps.
+    fn steps_are_stale(&self) -> bool {
+        self.flush_every
+            .is_some_and(|d| self.last_flush.elapsed() >= d)
+    }
+
     /// Sends the queued steps if they have waited long enough (call when idle).
     pub fn flush_if_stale(&mut self) -> rerun::RecordingStreamResult<()> {
-        if !self.pending.is_empty() && self.last_flush.elapsed() >= self.flush_every {
+        if !self.pending.is_empty() && self.steps_are_stale() {
             self.flush_steps()?;
         }
         Ok(())
