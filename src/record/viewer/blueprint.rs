@@ -140,6 +140,7 @@ pub(crate) fn default_blueprint(fit: &ViewFit) -> (Blueprint, ViewProperties) {
         .with_origin(paths::WORLD_SCREEN)
         .with_contents([
             format!("+ {}/vorticity", paths::WAKE),
+            format!("+ {}", paths::WAKE_WINDOW),
             format!("+ {}/**", paths::TRAJECTORY),
             format!("+ {}/**", paths::STROBE),
             format!("+ {}", paths::OUTLINE),

@@ -28,6 +28,8 @@ pub mod paths {
     pub const WAKE: &str = "/world/wake";
     /// The plate at each snapshot, drawn in the path frame.
     pub const WAKE_PLATE: &str = "/world/wake/plate";
+    /// A faint border of the wake window (static, path frame).
+    pub const WAKE_WINDOW: &str = "/world/wake/window";
     /// The path frame with Y mirrored for the screen (origin of the wake views).
     pub const WAKE_SCREEN: &str = "/world/wake/screen";
     pub const TRAJECTORY: &str = "/world/trajectory";

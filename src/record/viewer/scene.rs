@@ -152,6 +152,9 @@ impl Scene {
     pub fn step(&mut self, s: StepSample) -> rerun::RecordingStreamResult<()> {
         self.pending.push(s);
         self.wake.step(&s);
+        if self.last.is_none() {
+            self.start_pose(&s)?;
+        }
         if s.t + 1e-9 >= self.next_pose_t {
             self.next_pose_t = s.t + POSE_EVERY;
             self.poses.push((s.step, s.t, s.x, s.y, s.theta));
@@ -163,6 +166,17 @@ impl Scene {
             self.flush_steps()?;
         }
         Ok(())
+    }
+
+    /// The pose at the start (step 0, t = 0), extrapolated back from the first step's sample, so
+    /// that the views show the plate and the wake window from the first frame.
+    fn start_pose(&mut self, s: &StepSample) -> rerun::RecordingStreamResult<()> {
+        let back = |value: f64, rate: f64| value - rate * s.t;
+        let (x, y) = (back(s.x, s.xdot), back(s.y, s.ydot));
+        let theta = back(s.theta, s.omega);
+        self.poses.push((0, 0.0, x, y, theta));
+        self.set_time(0, 0.0);
+        self.wake.log_pose(&self.rec, x, y, theta)
     }
 
     /// True when a live viewer has waited long enough for the queued steps.

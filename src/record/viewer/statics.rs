@@ -26,6 +26,7 @@ pub(super) fn log_static(
     log_plate(rec, info.thickness, &opts.field_window)?;
     log_field_styles(rec, paths::PLATE, img)?;
     log_field_styles(rec, paths::WAKE, wake)?;
+    log_wake_window(rec, &wake.window)?;
     for (path, name, color) in SERIES {
         let style = SeriesLines::new()
             .with_names([name])
@@ -169,4 +170,16 @@ pub(super) fn window_reach(w: &FieldWindow) -> f64 {
     ]
     .into_iter()
     .fold(0.0f64, f64::max)
+}
+
+/// A faint border of the wake window in the path frame (static): it shows the window's extent
+/// in the trajectory view, also before the first snapshot.
+fn log_wake_window(rec: &RecordingStream, w: &FieldWindow) -> RecordingStreamResult<()> {
+    let (x0, x1, y0, y1) = (w.x0 as f32, w.x1 as f32, w.y0 as f32, w.y1 as f32);
+    rec.log_static(
+        paths::WAKE_WINDOW,
+        &LineStrips2D::new([[[x0, y0], [x1, y0], [x1, y1], [x0, y1], [x0, y0]]])
+            .with_colors([Color::from_unmultiplied_rgba(255, 255, 255, 60)])
+            .with_radii([Radius::new_ui_points(0.5)]),
+    )
 }

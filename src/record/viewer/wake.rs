@@ -49,6 +49,30 @@ impl WakeScene {
         self.heading.push(s.x, s.y, s.xdot, s.ydot);
     }
 
+    /// Poses the path frame at the plate's centre (x, y), turned to the current heading, and
+    /// draws the plate (pitch `theta`) in it: the wake view shows this plate, so that image and
+    /// plate agree between snapshots (the caller has set the time).
+    pub(super) fn log_pose(
+        &self,
+        rec: &RecordingStream,
+        x: f64,
+        y: f64,
+        theta: f64,
+    ) -> RecordingStreamResult<()> {
+        let heading = self.heading.angle();
+        rec.log(
+            paths::WAKE,
+            &Transform3D::from_translation_rotation(
+                [x as f32, y as f32, 0.0],
+                Quaternion::from_xyzw(z_rotation(heading)),
+            ),
+        )?;
+        rec.log(
+            paths::WAKE_PLATE,
+            &plate_drawing(self.thickness, theta - heading),
+        )
+    }
+
     /// Paints and logs the wake of `snap` (the caller has set the snapshot's time).
     pub(super) fn log(
         &self,
@@ -56,21 +80,8 @@ impl WakeScene {
         snap: &FieldSnapshot,
         fields: &SnapshotFields,
     ) -> RecordingStreamResult<()> {
-        let heading = self.heading.angle();
-        let images = self.painter.paint(snap, fields, heading);
-        rec.log(
-            paths::WAKE,
-            &Transform3D::from_translation_rotation(
-                [snap.x as f32, snap.y as f32, 0.0],
-                Quaternion::from_xyzw(z_rotation(heading)),
-            ),
-        )?;
-        // The plate as it was at the snapshot, in the path frame (the wake view shows this one,
-        // so that image and plate agree between snapshots).
-        rec.log(
-            paths::WAKE_PLATE,
-            &plate_drawing(self.thickness, snap.theta - heading),
-        )?;
+        let images = self.painter.paint(snap, fields, self.heading.angle());
+        self.log_pose(rec, snap.x, snap.y, snap.theta)?;
         log_field_images(
             rec,
             paths::WAKE,
