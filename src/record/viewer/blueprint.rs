@@ -23,7 +23,8 @@ use rerun::blueprint::{
 };
 use rerun::{RecordingStream, RecordingStreamResult};
 
-use super::layout::{paths, ALPHA_SCALE};
+use super::layout::paths;
+use super::polar::polar_axes;
 use super::view_properties::{send_with_properties, ViewProperties};
 use crate::post::{FieldWindow, PlotRanges};
 
@@ -112,10 +113,7 @@ fn plots(props: &mut ViewProperties, fit: &ViewFit) -> [ContainerLike; 4] {
     let polar = |name: &str, curves: &str| -> ContainerLike {
         Spatial2DView::new(name)
             .with_origin(paths::POLAR_SCREEN)
-            .with_contents([
-                format!("+ {curves}/**"),
-                format!("+ {}/**", paths::POLAR_AXES),
-            ])
+            .with_contents([format!("+ {curves}/**")])
             .into()
     };
     let polar_coefficients = polar("C_L, C_D, C_M vs α", paths::POLAR_COEFFICIENTS);
@@ -123,11 +121,13 @@ fn plots(props: &mut ViewProperties, fit: &ViewFit) -> [ContainerLike; 4] {
     if let Some(r) = fit.plots {
         props.y_range(&coefficients, r.coefficients);
         props.y_range(&motion, r.motion);
-        let x = ALPHA_SCALE * std::f64::consts::PI + 0.5;
-        // Mirrored screen frame: a value v is drawn at y = −v.
-        let mirrored = |[lo, hi]: [f64; 2]| [-hi, -lo];
-        props.bounds(&polar_coefficients, [-x, x], mirrored(r.coefficients));
-        props.bounds(&polar_motion, [-x, x], mirrored(r.motion));
+        for (view, axes) in [&polar_coefficients, &polar_motion]
+            .into_iter()
+            .zip(polar_axes(Some(r)))
+        {
+            let (x, y) = axes.bounds();
+            props.bounds(view, x, y);
+        }
     }
     [coefficients, motion, polar_coefficients, polar_motion]
 }

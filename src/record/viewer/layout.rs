@@ -41,7 +41,6 @@ pub mod paths {
     pub const POLAR_SCREEN: &str = "/polar/screen";
     pub const POLAR_COEFFICIENTS: &str = "/polar/coefficients";
     pub const POLAR_MOTION: &str = "/polar/motion";
-    pub const POLAR_AXES: &str = "/polar/axes";
     pub const CONFIG: &str = "/run/config";
     pub const SUMMARY: &str = "/run/summary";
     pub const STATUS: &str = "/run/status";
@@ -95,8 +94,6 @@ pub(super) const MAX_PENDING: usize = 8192;
 pub(super) const STEP_FLUSH_LIVE: Duration = Duration::from_secs(1);
 /// Convective time between recorded plate poses (the scalars are recorded every step).
 pub(super) const POSE_EVERY: f64 = 0.01;
-/// The α plots draw x = ALPHA_SCALE·α (the 2D view keeps a 1:1 aspect; this widens α).
-pub(super) const ALPHA_SCALE: f64 = 2.0;
 /// The α plots clip values to ±POLAR_CLIP (the impulsive start spikes far beyond).
 pub(super) const POLAR_CLIP: f64 = 10.0;
 /// Convective time between points of the trajectory and the polar curves.

@@ -5,6 +5,7 @@ mod blueprint;
 mod curves;
 mod images;
 mod layout;
+mod polar;
 mod scene;
 mod sinks;
 mod statics;

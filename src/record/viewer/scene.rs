@@ -15,6 +15,7 @@ use super::blueprint::{send_default_blueprint, ViewFit};
 use super::curves::{plate_outline, SegmentedCurve};
 use super::images::log_field_images;
 use super::layout::*;
+use super::polar::{polar_axes, polar_curves};
 use super::statics::{log_static, window_reach};
 use super::text::summary_markdown;
 use super::wake::WakeScene;
@@ -40,7 +41,8 @@ pub(crate) struct Scene {
     last_flush: Instant,
     trajectory: SegmentedCurve,
     strobe: SegmentedCurve,
-    polars: Vec<SegmentedCurve>,
+    /// The α plots' curves and their α scales.
+    polars: Vec<(SegmentedCurve, f64)>,
     next_sample_t: f64,
     next_log_t: f64,
     log_every: f64,
@@ -111,7 +113,7 @@ impl Scene {
             last_flush: Instant::now(),
             trajectory: SegmentedCurve::new(paths::TRAJECTORY, seg_len, 0xF2A93BFF, 1.2, inf),
             strobe: SegmentedCurve::new(paths::STROBE, seg_len, 0xC8C8C8FF, 0.8, inf),
-            polars: polar_curves(seg_len),
+            polars: polar_curves(seg_len, &polar_axes(opts.view.plot_ranges)),
             next_sample_t: f64::NEG_INFINITY,
             next_log_t: f64::NEG_INFINITY,
             log_every: opts.field_every.clamp(0.05, 1.0),
@@ -200,10 +202,10 @@ impl Scene {
             self.next_sample_t = s.t + SAMPLE_EVERY;
             self.set_time(s.step, s.t);
             self.trajectory.push(&self.rec, s.t, [s.x, s.y])?;
-            let x = ALPHA_SCALE * s.alpha;
             let values = [s.cl, s.cd, s.cm, s.speed, s.omega];
-            for (curve, v) in self.polars.iter_mut().zip(values) {
-                curve.push(&self.rec, s.t, [x, v.clamp(-POLAR_CLIP, POLAR_CLIP)])?;
+            for ((curve, scale), v) in self.polars.iter_mut().zip(values) {
+                let point = [*scale * s.alpha, v.clamp(-POLAR_CLIP, POLAR_CLIP)];
+                curve.push(&self.rec, s.t, point)?;
             }
             changed = true;
         }
@@ -226,7 +228,7 @@ impl Scene {
             self.next_log_t = s.t + self.log_every;
             self.set_time(s.step, s.t);
             self.trajectory.log(&self.rec)?;
-            for c in &mut self.polars {
+            for (c, _) in &mut self.polars {
                 c.log(&self.rec)?;
             }
         }
@@ -364,7 +366,7 @@ impl Scene {
         let (step, t) = self.last.map(|s| (s.step, s.t)).unwrap_or((0, 0.0));
         self.set_time(step, t);
         self.trajectory.log(&self.rec)?;
-        for c in &mut self.polars {
+        for (c, _) in &mut self.polars {
             c.log(&self.rec)?;
         }
         self.strobe.log(&self.rec)?;
@@ -380,21 +382,4 @@ impl Scene {
         )?;
         Ok(())
     }
-}
-
-/// The curves of the α plots (C_L, C_D, C_M; V, θ̇), in segments of `seg_len` time units; a jump
-/// in α by a whole turn breaks the line.
-fn polar_curves(seg_len: f64) -> Vec<SegmentedCurve> {
-    let wrap = ALPHA_SCALE * std::f64::consts::PI;
-    [
-        (paths::POLAR_COEFFICIENTS, "cl", 0),
-        (paths::POLAR_COEFFICIENTS, "cd", 1),
-        (paths::POLAR_COEFFICIENTS, "cm", 2),
-        (paths::POLAR_MOTION, "speed", 3),
-        (paths::POLAR_MOTION, "omega", 4),
-    ]
-    .map(|(base, name, k)| {
-        SegmentedCurve::new(&format!("{base}/{name}"), seg_len, SERIES[k].2, 1.0, wrap)
-    })
-    .into()
 }

@@ -2,12 +2,13 @@
 //! axes of the α plots and the run configuration.
 use rerun::components::{MagnificationFilter, Radius};
 use rerun::{
-    Color, DepthImage, LineStrips2D, Points2D, RecordingStream, RecordingStreamResult, SeriesLines,
+    Color, DepthImage, LineStrips2D, RecordingStream, RecordingStreamResult, SeriesLines,
     TextDocument, Transform3D,
 };
 
 use super::curves::plate_drawing;
-use super::layout::{paths, ALPHA_SCALE, FIELD_SCALES, SERIES};
+use super::layout::{paths, FIELD_SCALES, SERIES};
+use super::polar::polar_axes;
 use super::text::config_markdown;
 use crate::post::{FieldWindow, ImageGrid};
 use crate::record::messages::RunInfo;
@@ -33,7 +34,9 @@ pub(super) fn log_static(
             .with_colors([Color::from_u32(color)]);
         rec.log_static(path, &style)?;
     }
-    log_polar_axes(rec, polar_extent(opts))?;
+    let [coefficients, motion] = polar_axes(opts.view.plot_ranges);
+    coefficients.log(rec, paths::POLAR_COEFFICIENTS)?;
+    motion.log(rec, paths::POLAR_MOTION)?;
     rec.log_static(
         paths::CONFIG,
         &TextDocument::from_markdown(config_markdown(info, opts, img, wake)),
@@ -104,59 +107,6 @@ fn log_field_styles(
         )?;
     }
     Ok(())
-}
-
-/// The whole values reached by the vertical axis of the α plots: the plots' ranges (both views
-/// share the axes), ±6 when they are automatic.
-fn polar_extent(opts: &RecordOptions) -> (i32, i32) {
-    match opts.view.plot_ranges {
-        Some(r) => (
-            r.coefficients[0].min(r.motion[0]).ceil() as i32,
-            r.coefficients[1].max(r.motion[1]).floor() as i32,
-        ),
-        None => (-6, 6),
-    }
-}
-
-/// Axes of the α plots: x = ALPHA_SCALE·α over [−π, π] (ticks every π/2), y = value over
-/// `lo..=hi` (ticks every 1, labels every 2).
-fn log_polar_axes(rec: &RecordingStream, (lo, hi): (i32, i32)) -> RecordingStreamResult<()> {
-    let pi = std::f32::consts::PI;
-    let ax = ALPHA_SCALE as f32;
-    let mut axes = vec![
-        vec![[-ax * pi, 0.0], [ax * pi, 0.0]],
-        vec![[0.0, lo as f32], [0.0, hi as f32]],
-    ];
-    for k in [-2.0f32, -1.0, 1.0, 2.0] {
-        axes.push(vec![[ax * k * pi / 2.0, -0.1], [ax * k * pi / 2.0, 0.1]]);
-    }
-    for k in (lo..=hi).filter(|k| *k != 0) {
-        axes.push(vec![[-0.1, k as f32], [0.1, k as f32]]);
-    }
-    rec.log_static(
-        paths::POLAR_AXES,
-        &LineStrips2D::new(axes)
-            .with_colors([Color::from_rgb(140, 140, 140)])
-            .with_radii([Radius::new_ui_points(0.6)]),
-    )?;
-    let mut label_pos = vec![
-        [ax * pi, 0.0],
-        [ax * pi / 2.0, 0.0],
-        [-ax * pi / 2.0, 0.0],
-        [-ax * pi, 0.0],
-    ];
-    let mut labels: Vec<String> = ["α = π", "π/2", "−π/2", "−π"].map(String::from).to_vec();
-    for k in (lo..=hi).filter(|k| *k != 0 && k % 2 == 0) {
-        label_pos.push([0.0, k as f32]);
-        labels.push(k.to_string());
-    }
-    rec.log_static(
-        format!("{}/labels", paths::POLAR_AXES),
-        &Points2D::new(label_pos)
-            .with_labels(labels)
-            .with_radii([Radius::new_ui_points(1.0)])
-            .with_colors([Color::from_rgb(140, 140, 140)]),
-    )
 }
 
 /// The distance from the plate centre to the farthest corner of the window `w`: the radius the
