@@ -110,17 +110,11 @@ fn all_views_blueprint() -> rerun::blueprint::Blueprint {
         flow("Speed", "speed").into(),
         Spatial2DView::new("C vs α")
             .with_origin(paths::POLAR_SCREEN)
-            .with_contents([
-                format!("+ {}/**", paths::POLAR_COEFFICIENTS),
-                format!("+ {}/**", paths::POLAR_AXES),
-            ])
+            .with_contents([format!("+ {}/**", paths::POLAR_COEFFICIENTS)])
             .into(),
         Spatial2DView::new("V, dθ/dt vs α")
             .with_origin(paths::POLAR_SCREEN)
-            .with_contents([
-                format!("+ {}/**", paths::POLAR_MOTION),
-                format!("+ {}/**", paths::POLAR_AXES),
-            ])
+            .with_contents([format!("+ {}/**", paths::POLAR_MOTION)])
             .into(),
         TimeSeriesView::new("Solver")
             .with_contents([

@@ -97,9 +97,9 @@ fn full_run_round_trips_through_the_rrd_file() {
     ] {
         assert_eq!(d.rows(p), 200, "{p}");
     }
-    // Poses: every ≥ 0.01 c/U (here every step) and at every field snapshot.
-    assert_eq!(d.rows(paths::PLATE), 200 + accepted as usize);
-    assert_eq!(d.rows(paths::FOLLOW), 200 + accepted as usize);
+    // Poses: at the start (t = 0), every ≥ 0.01 c/U (here every step) and at every snapshot.
+    assert_eq!(d.rows(paths::PLATE), 1 + 200 + accepted as usize);
+    assert_eq!(d.rows(paths::FOLLOW), 1 + 200 + accepted as usize);
     let cl = d.scalars("/coefficients/cl");
     assert_eq!(cl.len(), 200);
     assert!((cl[41] - sample(42, 0.01).cl).abs() < 1e-12);

@@ -4,43 +4,28 @@
 #[path = "record_common/mod.rs"]
 mod record_common;
 
-use std::process::Command;
-
 #[test]
 fn a_recorded_static_run_holds_every_step_and_the_field_cadence() {
     let dir = record_common::temp_dir("recording-case");
     let rrd = dir.join("static.rrd");
     let summary = dir.join("static.json");
     let (t_end, every) = (2.0, 0.25);
-    let out = Command::new(env!("CARGO_BIN_EXE_platefall"))
-        .args([
-            "static",
-            "--alpha",
-            "0.4",
-            "--resolution",
-            "8",
-            "--progress",
-            "off",
-        ])
-        .args([
-            "--t-end",
-            &t_end.to_string(),
-            "--field-every",
-            &every.to_string(),
-        ])
-        .args([
-            "--save",
-            rrd.to_str().unwrap(),
-            "--summary",
-            summary.to_str().unwrap(),
-        ])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let (t, every_s) = (t_end.to_string(), every.to_string());
+    record_common::run_platefall(&[
+        "static",
+        "--alpha",
+        "0.4",
+        "--resolution",
+        "8",
+        "--t-end",
+        &t,
+        "--field-every",
+        &every_s,
+        "--save",
+        rrd.to_str().unwrap(),
+        "--summary",
+        summary.to_str().unwrap(),
+    ]);
     let steps =
         serde_json::from_str::<serde_json::Value>(&std::fs::read_to_string(&summary).unwrap())
             .unwrap()["steps"]

@@ -10,6 +10,7 @@ use crate::record::options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
     DEFAULT_PORT, FIELD_RES_RANGE,
 };
+use crate::record::view_options::{ViewOptions, DEFAULT_WAKE_RES};
 use crate::record::viewer;
 
 /// How progress is shown on stderr.
@@ -74,13 +75,32 @@ pub struct RecordArgs {
     #[arg(long)]
     pub spawn: bool,
 
-    /// Convective time (c/U) between field snapshots (images and streamlines)
-    #[arg(long, value_name = "T", default_value_t = DEFAULT_FIELD_EVERY)]
-    pub field_every: f64,
+    /// A recording small enough to attach to a bug report: field snapshots every 0.5 c/U and
+    /// 128-pixel close-up and wake images (an explicit --field-every, --field-res or --wake-res
+    /// overrides its value)
+    #[arg(long)]
+    pub small: bool,
 
-    /// Pixels along the longer side of the field images (16..=2048)
-    #[arg(long, value_name = "PX", default_value_t = DEFAULT_FIELD_RES)]
-    pub field_res: usize,
+    /// Convective time (c/U) between field snapshots (images and streamlines) [default: 0.1;
+    /// with --small 0.5]
+    #[arg(long, value_name = "T")]
+    pub field_every: Option<f64>,
+
+    /// Pixels along the longer side of the close-up field images (16..=2048) [default: 256;
+    /// with --small 128]
+    #[arg(long, value_name = "PX")]
+    pub field_res: Option<usize>,
+
+    /// Wake window along the plate's path, in chords: SMIN,SMAX along the direction of travel
+    /// (the plate at 0, its wake at negative values), NMIN,NMAX across it [default: static and
+    /// forced -8,2,-2.5,2.5; pinned and free -10,2,-3,3]
+    #[arg(long, value_name = "SMIN,SMAX,NMIN,NMAX", allow_hyphen_values = true)]
+    pub wake_window: Option<String>,
+
+    /// Pixels along the longer side of the wake images (16..=2048) [default: 256; with --small
+    /// 128]
+    #[arg(long, value_name = "PX")]
+    pub wake_res: Option<usize>,
 
     /// Field image window in body coordinates (chords): XMIN,XMAX,YMIN,YMAX
     #[arg(
@@ -119,6 +139,10 @@ pub enum OptionsError {
     FieldRes(usize),
     #[error("--field-window {0:?}: expected XMIN,XMAX,YMIN,YMAX (four finite numbers, XMIN < XMAX, YMIN < YMAX, containing the plate [-0.5, 0.5] x 0)")]
     FieldWindow(String),
+    #[error("--wake-window {0:?}: expected SMIN,SMAX,NMIN,NMAX (four finite numbers in [-15, 15] chords, SMIN < -0.5 < 0.5 < SMAX, NMIN < 0 < NMAX)")]
+    WakeWindow(String),
+    #[error("--wake-res {0}: must be in {lo}..={hi} pixels", lo = FIELD_RES_RANGE.start(), hi = FIELD_RES_RANGE.end())]
+    WakeRes(usize),
     #[error("--streamlines-frame {0}: must be 1, 2, 3 or 4 (1 plate-fixed, 2 fluid-fixed, 3 translating, 4 rotating)")]
     StreamlinesFrame(u8),
     #[error("--server-memory-limit {value:?}: {reason}; accepted: a share of RAM like \"25%\", a size like \"2GB\", or \"unlimited\"")]
@@ -167,7 +191,7 @@ impl RecordArgs {
         t_end: f64,
         others: &[(&'static str, &Path)],
     ) -> Result<RecordOptions, OptionsError> {
-        let (field_window, streamlines_frame) = self.field_options()?;
+        let fields = self.field_options()?;
         self.check_viewer_feature()?;
         let serve = self.serve_options()?;
         let connect = self.connect_url()?;
@@ -187,10 +211,11 @@ impl RecordArgs {
             serve,
             connect,
             spawn: self.spawn,
-            field_every: self.field_every,
-            field_res: self.field_res,
-            field_window,
-            streamlines_frame,
+            field_every: fields.every,
+            field_res: fields.res,
+            field_window: fields.window,
+            streamlines_frame: fields.frame,
+            view: fields.view,
             csv,
             progress,
             t_end,
@@ -198,19 +223,51 @@ impl RecordArgs {
         })
     }
 
-    /// The field cadence, image size, window and streamline frame.
-    fn field_options(&self) -> Result<(FieldWindow, StreamFrame), OptionsError> {
-        if !(self.field_every.is_finite() && self.field_every > 0.0) {
-            return Err(OptionsError::FieldEvery(self.field_every));
+    /// The field cadence, image sizes, windows and streamline frame: explicit flags, else the
+    /// --small setting, else the defaults.
+    fn field_options(&self) -> Result<FieldOptions, OptionsError> {
+        let (every, res) = if self.small {
+            (SMALL_FIELD_EVERY, SMALL_RES)
+        } else {
+            (DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES)
+        };
+        let every = self.field_every.unwrap_or(every);
+        if !(every.is_finite() && every > 0.0) {
+            return Err(OptionsError::FieldEvery(every));
         }
-        if !FIELD_RES_RANGE.contains(&self.field_res) {
-            return Err(OptionsError::FieldRes(self.field_res));
+        let field_res = self.field_res.unwrap_or(res);
+        if !FIELD_RES_RANGE.contains(&field_res) {
+            return Err(OptionsError::FieldRes(field_res));
+        }
+        let wake_res = self.wake_res.unwrap_or(if self.small {
+            SMALL_RES
+        } else {
+            DEFAULT_WAKE_RES
+        });
+        if !FIELD_RES_RANGE.contains(&wake_res) {
+            return Err(OptionsError::WakeRes(wake_res));
         }
         let window = parse_window(&self.field_window)
             .ok_or_else(|| OptionsError::FieldWindow(self.field_window.clone()))?;
+        let wake_window = match &self.wake_window {
+            Some(text) => Some(
+                parse_wake_window(text).ok_or_else(|| OptionsError::WakeWindow(text.clone()))?,
+            ),
+            None => None,
+        };
         let frame = StreamFrame::from_number(self.streamlines_frame)
             .ok_or(OptionsError::StreamlinesFrame(self.streamlines_frame))?;
-        Ok((window, frame))
+        Ok(FieldOptions {
+            every,
+            res: field_res,
+            window,
+            frame,
+            view: ViewOptions {
+                wake_window,
+                wake_res,
+                plot_ranges: None,
+            },
+        })
     }
 
     /// Without the `viewer` feature only --no-save runs (CSV, summary) are possible.
@@ -321,8 +378,8 @@ fn path_error(flag: &'static str, path: &Path, reason: String) -> OptionsError {
     }
 }
 
-/// "x0,x1,y0,y1" → a valid window containing the plate.
-fn parse_window(s: &str) -> Option<FieldWindow> {
+/// "x0,x1,y0,y1" → a valid window (four finite numbers, x0 < x1, y0 < y1).
+fn parse_four(s: &str) -> Option<FieldWindow> {
     let v: Vec<f64> = s
         .split(',')
         .map(|p| p.trim().parse::<f64>())
@@ -337,8 +394,34 @@ fn parse_window(s: &str) -> Option<FieldWindow> {
         y0: *y0,
         y1: *y1,
     };
-    (w.is_valid() && w.x0 < -0.5 && w.x1 > 0.5 && w.y0 < 0.0 && w.y1 > 0.0).then_some(w)
+    w.is_valid().then_some(w)
 }
+
+/// "x0,x1,y0,y1" → a valid window containing the plate.
+fn parse_window(s: &str) -> Option<FieldWindow> {
+    parse_four(s).filter(|w| w.x0 < -0.5 && w.x1 > 0.5 && w.y0 < 0.0 && w.y1 > 0.0)
+}
+
+/// "s0,s1,n0,n1" → a valid wake window around the plate, within 15 chords (the default grid's
+/// extent) on every side.
+fn parse_wake_window(s: &str) -> Option<FieldWindow> {
+    let within = |v: f64| (-15.0..=15.0).contains(&v);
+    parse_window(s).filter(|w| [w.x0, w.x1, w.y0, w.y1].into_iter().all(within))
+}
+
+/// The resolved field options of [`RecordArgs::field_options`].
+struct FieldOptions {
+    every: f64,
+    res: usize,
+    window: FieldWindow,
+    frame: StreamFrame,
+    view: ViewOptions,
+}
+
+/// `--small`: convective time (c/U) between field snapshots.
+pub const SMALL_FIELD_EVERY: f64 = 0.5;
+/// `--small`: pixels along the longer side of the close-up and wake images.
+pub const SMALL_RES: usize = 128;
 
 /// The first executable called `name` on PATH.
 pub(crate) fn find_on_path(name: &str) -> Option<PathBuf> {
@@ -404,6 +487,13 @@ mod tests {
             (&["--field-res", "8"], "--field-res 8: must be in 16..=2048"),
             (&["--streamlines-frame", "5"], "--streamlines-frame 5"),
             (&["--field-window", "1,2,3"], "--field-window"),
+            (&["--wake-window", "-8,2,0,1"], "--wake-window"),
+            (&["--wake-window", "-16,2,-1,1"], "[-15, 15]"),
+            (
+                &["--wake-res", "4096"],
+                "--wake-res 4096: must be in 16..=2048",
+            ),
+            (&["--small", "--field-res", "8"], "--field-res 8"),
             (&["--save", "/nonexistent-dir-pf/x.rrd"], "does not exist"),
             (&["--save", "/tmp/x.txt"], "must end in .rrd"),
             (&["--csv", "/nonexistent-dir-pf/x.csv"], "--csv"),
@@ -422,6 +512,36 @@ mod tests {
             assert!(e.contains(expect), "{argv:?}: {e}");
             assert!(!e.contains('\n'), "one line: {e}");
         }
+    }
+
+    #[test]
+    fn small_sets_the_bug_report_setting_and_explicit_flags_win() {
+        let o = args(&["--no-save", "--small"])
+            .resolve("free", 1.0, &[])
+            .unwrap();
+        assert_eq!((o.field_every, o.field_res), (SMALL_FIELD_EVERY, SMALL_RES));
+        assert_eq!(o.view.wake_res, SMALL_RES);
+        assert_eq!(o.view.wake_window, None);
+        let o = args(&[
+            "--no-save",
+            "--small",
+            "--field-res",
+            "200",
+            "--wake-res",
+            "96",
+        ])
+        .resolve("free", 1.0, &[])
+        .unwrap();
+        assert_eq!(
+            (o.field_every, o.field_res, o.view.wake_res),
+            (0.5, 200, 96)
+        );
+        let o = args(&["--no-save", "--wake-window", "-6,1.5,-2,3"])
+            .resolve("static", 1.0, &[])
+            .unwrap();
+        let w = o.view.wake_window.unwrap();
+        assert_eq!([w.x0, w.x1, w.y0, w.y1], [-6.0, 1.5, -2.0, 3.0]);
+        assert_eq!(o.view.wake_res, DEFAULT_WAKE_RES);
     }
 
     #[test]

@@ -90,7 +90,8 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
     } else {
         config.time.t_end
     };
-    let opts = record_args.resolve(config.case.name(), progress_end, &others)?;
+    let mut opts = record_args.resolve(config.case.name(), progress_end, &others)?;
+    opts.view.plot_ranges = Some(crate::post::PlotRanges::for_config(&config));
     for line in super::args::plate_notes(cmd, &config) {
         eprintln!("{line}");
     }

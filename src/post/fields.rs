@@ -47,6 +47,24 @@ pub fn face_velocities(grid: &GridGeometry, snap: &FieldSnapshot) -> (Vec<f64>, 
     (u, v)
 }
 
+/// The grid quantities of one snapshot that the pictures sample, computed once per snapshot and
+/// shared by the close-up and the wake: face velocities with the plate's rigid motion on its
+/// faces ([`face_velocities`]) and the vorticity at the nodes ([`vorticity_at_nodes`]).
+#[derive(Clone, Debug)]
+pub struct SnapshotFields {
+    pub u: Vec<f64>,
+    pub v: Vec<f64>,
+    pub vorticity: Vec<f64>,
+}
+
+impl SnapshotFields {
+    pub fn new(grid: &GridGeometry, snap: &FieldSnapshot) -> Self {
+        let (u, v) = face_velocities(grid, snap);
+        let vorticity = vorticity_at_nodes(grid, &u, &v);
+        Self { u, v, vorticity }
+    }
+}
+
 /// Vorticity ω = ∂v/∂x − ∂u/∂y at the grid nodes (cell corners), from face velocities `u`, `v`
 /// (e.g. from [`face_velocities`]). Length (nx+1)(ny+1), index `i + (nx+1) j`.
 ///

@@ -19,18 +19,27 @@
 //! - [`painter`]: [`FieldPainter`] puts it together: one call turns a snapshot into the three
 //!   images (vorticity, pressure, speed) and the streamlines, with all interpolation weights
 //!   precomputed once per run.
+//! - [`wake`]: the same three fields over a long window that follows the plate along its path
+//!   ([`WakePainter`], [`PathHeading`]).
+//! - [`plot_range`]: the value ranges the viewer's plots open on ([`PlotRanges`]), chosen from
+//!   the case so that the developed motion fills them and the start-up spike lies outside.
 pub mod analysis;
 pub mod contour;
 pub mod fields;
 pub mod painter;
+pub mod plot_range;
 pub mod regime;
 pub mod report;
 pub mod resample;
 pub mod summary;
+pub mod wake;
 
 pub use contour::{isolines, simplify_polyline, Polyline};
 pub use fields::{
-    cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, StreamFrame,
+    cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, SnapshotFields,
+    StreamFrame,
 };
 pub use painter::{FieldPainter, PaintedFields, PainterOptions};
-pub use resample::{bilinear, AxisWeights, FieldWindow, ImageGrid};
+pub use plot_range::PlotRanges;
+pub use resample::{bilinear, bilinear_at_points, AxisWeights, FieldWindow, ImageGrid};
+pub use wake::{default_wake_window, PathHeading, WakeImages, WakePainter};

@@ -3,9 +3,7 @@
 use std::sync::Arc;
 
 use super::contour::{isolines, simplify_polyline, Polyline};
-use super::fields::{
-    cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, StreamFrame,
-};
+use super::fields::{cell_centres, stream_function_at_nodes, SnapshotFields, StreamFrame};
 use super::resample::{bilinear, AxisWeights, FieldWindow, ImageGrid};
 use crate::grid::GridGeometry;
 use crate::sim::FieldSnapshot;
@@ -152,6 +150,11 @@ impl FieldPainter {
         self.image
     }
 
+    /// The grid the snapshots are painted from.
+    pub fn grid(&self) -> &GridGeometry {
+        &self.grid
+    }
+
     pub fn options(&self) -> &PainterOptions {
         &self.opts
     }
@@ -182,8 +185,13 @@ impl FieldPainter {
     /// Paints one snapshot. The snapshot must belong to this painter's grid (see
     /// [`check`](Self::check); wrong sizes panic).
     pub fn paint(&self, snap: &FieldSnapshot) -> PaintedFields {
-        let grid = &*self.grid;
-        let (u, v) = face_velocities(grid, snap);
+        self.paint_fields(snap, &SnapshotFields::new(&self.grid, snap))
+    }
+
+    /// Paints one snapshot from its grid quantities, already computed (and shared with the
+    /// [`WakePainter`](super::wake::WakePainter)).
+    pub fn paint_fields(&self, snap: &FieldSnapshot, fields: &SnapshotFields) -> PaintedFields {
+        let (u, v) = (&fields.u, &fields.v);
         let frame = self.opts.frame;
 
         let to_image = |vals: Vec<f64>| -> Vec<f32> {
@@ -193,12 +201,11 @@ impl FieldPainter {
                 .collect()
         };
 
-        let omega = vorticity_at_nodes(grid, &u, &v);
-        let vorticity = to_image(bilinear(&omega, &self.w_node.0, &self.w_node.1));
+        let vorticity = to_image(bilinear(&fields.vorticity, &self.w_node.0, &self.w_node.1));
         let pressure = to_image(bilinear(&snap.p, &self.w_centre.0, &self.w_centre.1));
 
-        let ui = bilinear(&u, &self.w_u.0, &self.w_u.1);
-        let vi = bilinear(&v, &self.w_v.0, &self.w_v.1);
+        let ui = bilinear(u, &self.w_u.0, &self.w_u.1);
+        let vi = bilinear(v, &self.w_v.0, &self.w_v.1);
         let w = self.image.width;
         let speed_f64: Vec<f64> = ui
             .iter()
@@ -212,7 +219,7 @@ impl FieldPainter {
             .collect();
         let speed = to_image(speed_f64);
 
-        let (streamlines, psi_spacing) = self.streamlines(snap, &u, &v);
+        let (streamlines, psi_spacing) = self.streamlines(snap, u, v);
         PaintedFields {
             vorticity,
             pressure,
@@ -272,6 +279,7 @@ impl FieldPainter {
 mod tests {
     use super::*;
     use crate::flow::Frame;
+    use crate::post::fields::{face_velocities, vorticity_at_nodes};
 
     /// A stretched grid (geometric spacing) over [-3, 5] × [-3, 3] with a plate in the middle.
     pub(crate) fn test_grid(nx: usize, ny: usize) -> GridGeometry {

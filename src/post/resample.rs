@@ -175,3 +175,29 @@ pub fn bilinear(values: &[f64], ax: &AxisWeights, ay: &AxisWeights) -> Vec<f64> 
     }
     out
 }
+
+/// Bilinear interpolation of `values` (row-major, x fastest, `ax.n_src × ay.n_src`) at scattered
+/// points: point k is at (x from `ax` entry k, y from `ay` entry k), so `ax` and `ay` must have
+/// one entry per point (unlike [`bilinear`], which samples their tensor product).
+pub fn bilinear_at_points(values: &[f64], ax: &AxisWeights, ay: &AxisWeights) -> Vec<f64> {
+    let nsx = ax.n_src;
+    assert_eq!(
+        values.len(),
+        nsx * ay.n_src,
+        "bilinear_at_points: values do not match the axes"
+    );
+    assert_eq!(
+        ax.len(),
+        ay.len(),
+        "bilinear_at_points: one x and one y per point"
+    );
+    let at = |i: usize, j: usize| values[i.min(nsx - 1) + nsx * j.min(ay.n_src - 1)];
+    (0..ax.len())
+        .map(|k| {
+            let (i, fx, j, fy) = (ax.idx[k], ax.frac[k], ay.idx[k], ay.frac[k]);
+            let a = at(i, j) + fx * (at(i + 1, j) - at(i, j));
+            let b = at(i, j + 1) + fx * (at(i + 1, j + 1) - at(i, j + 1));
+            a + fy * (b - a)
+        })
+        .collect()
+}

@@ -74,6 +74,18 @@
 //!                                 (each image: static Transform3D = window corner + pixel size;
 //!                                  NaN inside the plate)
 //! /world/plate/streamlines        LineStrips2D, contours of the relative stream function ψ − ψ_w
+//! /world/wake                     Transform3D at every field snapshot: translation (X, Y) and
+//!                                 rotation by the path heading (the direction of the centre's
+//!                                 last 4 chords of path); children are in this path frame
+//! /world/wake/vorticity           DepthImage (f16) of ω over the wake window (default: static,
+//!                                 forced x in [−8, 2], y in [−2.5, 2.5]; pinned, free [−10, 2] ×
+//!                                 [−3, 3]; the wake at negative x), same scale as the close-up,
+//!                                 values rounded to 1/256 of it; NaN outside the grid and plate
+//! /world/wake/pressure            DepthImage (f16) of p over the wake window
+//! /world/wake/speed               DepthImage (f16) of |u − w| over the wake window
+//! /world/wake/plate               LineStrips2D at every snapshot: the plate as it was then, in
+//!                                 the path frame (the wake view draws this one)
+//! /world/wake/screen              Transform3D scale (1, −1) (static): origin of the wake view
 //! /world/trajectory/NNNN          LineStrips2D, the centre's path, one entity per time segment
 //! /world/strobe/NNNN              LineStrips2D, plate outlines every 0.5 c/U along the path
 //! /world/follow                   Transform3D with the poses: translation (X, Y), scale (1, −1):
@@ -95,8 +107,14 @@
 //! /run/skipped_fields             Scalars at every field snapshot: snapshots skipped so far
 //! ```
 //! The 2D view draws +y downwards, so the views look at the data through the mirrored frames
-//! (`/world/follow`, `/world/screen`, `/polar/screen`) instead of mirroring the data: the data
-//! stay in physical coordinates and the picture has Y up, gravity down.
+//! (`/world/follow`, `/world/screen`, `/world/wake/screen`, `/polar/screen`) instead of mirroring
+//! the data: the data stay in physical coordinates and the picture has Y up, gravity down (the
+//! wake view has the path along +x: for a free fall it is turned by the glide angle).
+//!
+//! The blueprint (`record/viewer/blueprint.rs`) opens the coefficient, motion and α plots on
+//! ranges chosen from the case (`post/plot_range.rs`: the developed motion inside, the
+//! impulsive-start spike outside) and the wake and close-up views on fixed bounds; these are
+//! view properties in the blueprint store (`view/<id>/ScalarAxis`, `view/<id>/VisualBounds2D`).
 //!
 //! The "growing" curves (trajectory, strobe, α plots) are split into segments of
 //! max(2, t_end/40) c/U, one entity each, re-sent only while their segment grows, so the total
@@ -123,6 +141,7 @@ pub mod messages;
 pub mod options;
 pub mod output;
 mod progress;
+pub mod view_options;
 #[cfg(feature = "viewer")]
 pub mod viewer;
 #[cfg(not(feature = "viewer"))]
@@ -134,6 +153,7 @@ pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
 };
+pub use view_options::{ViewOptions, DEFAULT_WAKE_RES};
 pub use viewer::ConnectReport;
 #[cfg(feature = "viewer")]
 pub use viewer::{paths, APPLICATION_ID};

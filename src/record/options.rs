@@ -3,6 +3,7 @@
 use std::net::{IpAddr, SocketAddr};
 use std::path::PathBuf;
 
+use super::view_options::ViewOptions;
 use crate::post::{FieldWindow, StreamFrame};
 
 /// Default convective time between field snapshots (see the size budget in `record/mod.rs`).
@@ -82,6 +83,8 @@ pub struct RecordOptions {
     pub max_fields_in_flight: usize,
     /// Convective time between the plate outlines of the strobe picture.
     pub strobe_every: f64,
+    /// The wake pictures and the plots' ranges.
+    pub view: ViewOptions,
 }
 
 impl Default for RecordOptions {
@@ -101,6 +104,7 @@ impl Default for RecordOptions {
             channel_capacity: 1024,
             max_fields_in_flight: 4,
             strobe_every: 0.5,
+            view: ViewOptions::default(),
         }
     }
 }

@@ -13,6 +13,21 @@ use platefall::sim::{FieldSnapshot, StepSample};
 use rerun::external::re_log_encoding::DecoderApp;
 use rerun::log::{Chunk, LogMsg};
 
+/// Runs the platefall binary with `args` (and `--progress off`); panics with its stderr unless
+/// it succeeds.
+pub fn run_platefall<S: AsRef<std::ffi::OsStr>>(args: &[S]) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_platefall"))
+        .args(args)
+        .args(["--progress", "off"])
+        .output()
+        .expect("the platefall binary runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 /// A fresh temporary directory for one test.
 pub fn temp_dir(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("platefall-{name}-{}", std::process::id()));
@@ -189,6 +204,8 @@ pub struct Decoded {
     /// Recording chunks (not the blueprint's).
     pub chunks: Vec<Chunk>,
     pub has_blueprint: bool,
+    /// The blueprint store's chunks (the default layout and its view properties).
+    pub blueprint: Vec<Chunk>,
     /// True if the file ends with a footer (RRD manifest): the sink was finalised.
     pub has_footer: bool,
     pub timelines: Vec<String>,
@@ -248,6 +265,88 @@ impl Decoded {
     }
 }
 
+/// Blueprint archetypes of the view properties the tests read.
+use rerun::external::re_sdk_types::blueprint::archetypes::{
+    ScalarAxis, ViewBlueprint, VisualBounds2D,
+};
+
+/// Every value of component `id` (type `C`) in `chunks` whose entity path (without the leading
+/// slash) satisfies `at`, with that path.
+fn values_where<C: rerun::Component + Clone>(
+    chunks: &[Chunk],
+    at: impl Fn(&str) -> bool,
+    id: rerun::ComponentIdentifier,
+) -> Vec<(String, C)> {
+    let mut out = Vec::new();
+    for c in chunks {
+        let path = c.entity_path().to_string();
+        let path = path.trim_start_matches('/');
+        if !at(path) {
+            continue;
+        }
+        for batch in c.iter_component::<C>(id) {
+            out.extend(batch.iter().map(|v| (path.to_string(), v.clone())));
+        }
+    }
+    out
+}
+
+impl Decoded {
+    /// Every value of component `id` (of type `C`) logged at `path`, in chunk order.
+    pub fn values<C: rerun::Component + Clone>(
+        &self,
+        path: &str,
+        id: rerun::ComponentIdentifier,
+    ) -> Vec<C> {
+        values_where(&self.chunks, |p| p == path.trim_start_matches('/'), id)
+            .into_iter()
+            .map(|(_, v)| v)
+            .collect()
+    }
+
+    /// (blueprint path `view/<id>`, display name) of every view of the blueprint.
+    pub fn views(&self) -> Vec<(String, String)> {
+        let id = ViewBlueprint::descriptor_display_name().component;
+        values_where::<rerun::components::Name>(&self.blueprint, |_| true, id)
+            .into_iter()
+            .map(|(path, name)| (path, name.as_str().to_string()))
+            .collect()
+    }
+
+    /// A blueprint property of the view called `name`: component `id` of `{view}/{property}`.
+    fn view_property<C: rerun::Component + Clone>(
+        &self,
+        name: &str,
+        property: &str,
+        id: rerun::ComponentIdentifier,
+    ) -> Option<C> {
+        let (view, _) = self.views().into_iter().find(|(_, n)| n == name)?;
+        let path = format!("{view}/{property}");
+        values_where::<C>(&self.blueprint, |p| p == path, id)
+            .into_iter()
+            .map(|(_, v)| v)
+            .next()
+    }
+
+    /// The y range a time-series view opens on (blueprint property `ScalarAxis`).
+    pub fn y_range(&self, view: &str) -> Option<[f64; 2]> {
+        let id = ScalarAxis::descriptor_range().component;
+        let r = self.view_property::<rerun::components::Range1D>(view, "ScalarAxis", id)?;
+        Some(r.0 .0)
+    }
+
+    /// The visual bounds (x range, y range) a 2-D view opens on (`VisualBounds2D`).
+    pub fn visual_bounds(&self, view: &str) -> Option<([f64; 2], [f64; 2])> {
+        let id = VisualBounds2D::descriptor_range().component;
+        let b = self.view_property::<rerun::blueprint::components::VisualBounds2D>(
+            view,
+            "VisualBounds2D",
+            id,
+        )?;
+        Some((b.0.x_range.0, b.0.y_range.0))
+    }
+}
+
 pub fn decode(path: &Path) -> Decoded {
     decode_impl(path, false)
 }
@@ -272,6 +371,8 @@ fn decode_impl(path: &Path, partial: bool) -> Decoded {
             LogMsg::ArrowMsg(store_id, arrow) => {
                 if store_id.kind() != rerun::StoreKind::Recording {
                     d.has_blueprint = true;
+                    d.blueprint
+                        .push(Chunk::from_arrow_msg(&arrow).expect("blueprint chunk"));
                     continue;
                 }
                 let chunk = Chunk::from_arrow_msg(&arrow).expect("chunk");

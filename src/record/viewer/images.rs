@@ -1,4 +1,33 @@
 //! Field images as half-precision depth data.
+use rerun::datatypes::ChannelDatatype;
+use rerun::{DepthImage, RecordingStream, RecordingStreamResult};
+
+use super::layout::FIELD_SCALES;
+use crate::post::ImageGrid;
+
+/// Logs the three field images (vorticity, pressure, speed, laid out as `img`) under `base`,
+/// each rounded to `levels` steps of its colour scale.
+pub(super) fn log_field_images(
+    rec: &RecordingStream,
+    base: &str,
+    images: [&[f32]; 3],
+    img: &ImageGrid,
+    levels: f64,
+) -> RecordingStreamResult<()> {
+    let size = [img.width as u32, img.height as u32];
+    for (data, (name, _, lo, hi)) in images.into_iter().zip(FIELD_SCALES) {
+        let quantum = ((hi - lo) / levels) as f32;
+        rec.log(
+            format!("{base}/{name}"),
+            &DepthImage::from_data_type_and_bytes(
+                f16_bytes(data, quantum),
+                size,
+                ChannelDatatype::F16,
+            ),
+        )?;
+    }
+    Ok(())
+}
 
 /// Half-precision little-endian bytes of `values`, rounded to multiples of `quantum` first (so
 /// that the colour scale's resolution is kept and near-uniform regions become runs LZ4 can

@@ -21,8 +21,17 @@ pub mod paths {
     pub const PLATE: &str = "/world/plate";
     pub const OUTLINE: &str = "/world/plate/outline";
     pub const STREAMLINES: &str = "/world/plate/streamlines";
-    /// Field images under `PLATE`.
+    /// Field images under `PLATE` (the close-up, body axes) and `WAKE` (path frame).
     pub const FIELDS: &[&str] = &["vorticity", "pressure", "speed"];
+    /// The wake window's frame at each snapshot: Transform3D translation (X, Y) and rotation by
+    /// the path heading; its field images are in path-frame coordinates.
+    pub const WAKE: &str = "/world/wake";
+    /// The plate at each snapshot, drawn in the path frame.
+    pub const WAKE_PLATE: &str = "/world/wake/plate";
+    /// A faint border of the wake window (static, path frame).
+    pub const WAKE_WINDOW: &str = "/world/wake/window";
+    /// The path frame with Y mirrored for the screen (origin of the wake views).
+    pub const WAKE_SCREEN: &str = "/world/wake/screen";
     pub const TRAJECTORY: &str = "/world/trajectory";
     pub const STROBE: &str = "/world/strobe";
     pub const COEFFICIENTS: &str = "/coefficients";
@@ -32,7 +41,6 @@ pub mod paths {
     pub const POLAR_SCREEN: &str = "/polar/screen";
     pub const POLAR_COEFFICIENTS: &str = "/polar/coefficients";
     pub const POLAR_MOTION: &str = "/polar/motion";
-    pub const POLAR_AXES: &str = "/polar/axes";
     pub const CONFIG: &str = "/run/config";
     pub const SUMMARY: &str = "/run/summary";
     pub const STATUS: &str = "/run/status";
@@ -78,19 +86,27 @@ pub(super) fn series_value(i: usize, s: &StepSample) -> f64 {
 
 /// Largest batch of steps sent as one set of columns.
 pub(super) const MAX_PENDING: usize = 8192;
-/// Longest a step waits before it is sent: every send makes one chunk per series, and each chunk
-/// costs ~1.3 kB in the file beyond its rows, so this trades live latency for size.
+/// Longest a step waits before it is sent while a viewer watches live: every send makes one
+/// chunk per series, and each chunk costs ~1.3 kB in the file beyond its rows, so this trades
+/// live latency for size. With the file alone the steps go out in chunks of MAX_PENDING rows, so
+/// the file's size does not depend on how fast the machine runs (a wall-clock cadence made a run
+/// slowed down 3× by other jobs 2 MB larger).
 pub(super) const STEP_FLUSH_LIVE: Duration = Duration::from_secs(1);
-/// The same when nothing is watching live (file only).
-pub(super) const STEP_FLUSH_FILE: Duration = Duration::from_secs(4);
 /// Convective time between recorded plate poses (the scalars are recorded every step).
 pub(super) const POSE_EVERY: f64 = 0.01;
-/// The α plots draw x = ALPHA_SCALE·α (the 2D view keeps a 1:1 aspect; this widens α).
-pub(super) const ALPHA_SCALE: f64 = 2.0;
 /// The α plots clip values to ±POLAR_CLIP (the impulsive start spikes far beyond).
 pub(super) const POLAR_CLIP: f64 = 10.0;
 /// Convective time between points of the trajectory and the polar curves.
 pub(super) const SAMPLE_EVERY: f64 = 0.02;
 
-/// Colour-scale steps kept in the images: (upper − lower) / IMAGE_LEVELS.
+/// Colour-scale steps kept in the close-up images: (upper − lower) / IMAGE_LEVELS.
 pub(super) const IMAGE_LEVELS: f64 = 1024.0;
+/// The same for the wake images: as many steps as a colour map shows (the picture is the same),
+/// and runs of equal values in smooth regions for LZ4 (vorticity to 0.08 on hover).
+pub(super) const WAKE_IMAGE_LEVELS: f64 = 256.0;
+
+/// The rotation by `angle` (radians, counter-clockwise) about z as a quaternion (x, y, z, w).
+pub(super) fn z_rotation(angle: f64) -> [f32; 4] {
+    let (sin, cos) = (0.5 * angle).sin_cos();
+    [0.0, 0.0, sin as f32, cos as f32]
+}

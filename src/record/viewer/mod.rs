@@ -1,15 +1,18 @@
 //! The Rerun side of a recording (cargo feature `viewer`, on by default): the sinks (file,
 //! `--serve`, `--connect`, `--spawn`), the scene (entities, documented in `record/mod.rs`) and the
-//! default blueprint. The logger thread drives a [`Viewer`] and knows nothing of Rerun.
+//! default blueprint (sent by the scene when it starts). The logger thread drives a [`Viewer`] and knows nothing of Rerun.
 mod blueprint;
 mod curves;
 mod images;
 mod layout;
+mod polar;
 mod rrd_file;
 mod scene;
 mod sinks;
 mod statics;
 mod text;
+mod view_properties;
+mod wake;
 
 use std::path::PathBuf;
 use std::str::FromStr as _;
@@ -95,9 +98,6 @@ impl Viewer {
             .context("cannot start the Rerun recording")?;
         rec.set_log_tick_enabled(false);
         rec.set_log_time_enabled(false);
-        blueprint::default_blueprint()
-            .send(&rec, rerun::blueprint::BlueprintActivation::default())
-            .context("cannot send the viewer layout")?;
         let scene = Scene::start(rec.clone(), info, opts).context("recording")?;
         Ok(Viewer {
             rec,

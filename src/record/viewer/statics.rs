@@ -2,37 +2,44 @@
 //! axes of the α plots and the run configuration.
 use rerun::components::{MagnificationFilter, Radius};
 use rerun::{
-    Color, DepthImage, LineStrips2D, Points2D, RecordingStream, RecordingStreamResult, SeriesLines,
+    Color, DepthImage, LineStrips2D, RecordingStream, RecordingStreamResult, SeriesLines,
     TextDocument, Transform3D,
 };
 
-use super::curves::plate_outline;
-use super::layout::{paths, ALPHA_SCALE, FIELD_SCALES, SERIES};
+use super::curves::plate_drawing;
+use super::layout::{paths, FIELD_SCALES, SERIES};
+use super::polar::polar_axes;
 use super::text::config_markdown;
 use crate::post::{FieldWindow, ImageGrid};
 use crate::record::messages::RunInfo;
 use crate::record::options::RecordOptions;
 
-/// Logs everything that does not change during the run.
+/// Logs everything that does not change during the run: `img` and `wake` are the close-up and
+/// wake image geometries.
 pub(super) fn log_static(
     rec: &RecordingStream,
     info: &RunInfo,
     opts: &RecordOptions,
     img: &ImageGrid,
+    wake: &ImageGrid,
 ) -> RecordingStreamResult<()> {
     log_screen_frames(rec)?;
     log_plate(rec, info.thickness, &opts.field_window)?;
-    log_field_styles(rec, img)?;
+    log_field_styles(rec, paths::PLATE, img)?;
+    log_field_styles(rec, paths::WAKE, wake)?;
+    log_wake_window(rec, &wake.window)?;
     for (path, name, color) in SERIES {
         let style = SeriesLines::new()
             .with_names([name])
             .with_colors([Color::from_u32(color)]);
         rec.log_static(path, &style)?;
     }
-    log_polar_axes(rec)?;
+    let [coefficients, motion] = polar_axes(opts.view.plot_ranges);
+    coefficients.log(rec, paths::POLAR_COEFFICIENTS)?;
+    motion.log(rec, paths::POLAR_MOTION)?;
     rec.log_static(
         paths::CONFIG,
-        &TextDocument::from_markdown(config_markdown(info, opts, img)),
+        &TextDocument::from_markdown(config_markdown(info, opts, img, wake)),
     )?;
     rec.log_static(
         paths::SUMMARY,
@@ -47,6 +54,7 @@ fn log_screen_frames(rec: &RecordingStream) -> RecordingStreamResult<()> {
     let mirror = Transform3D::from_scale([1.0, -1.0, 1.0]);
     rec.log_static(paths::WORLD_SCREEN, &mirror)?;
     rec.log_static(paths::POLAR_SCREEN, &mirror)?;
+    rec.log_static(paths::WAKE_SCREEN, &mirror)?;
     rec.log_static(
         paths::FOLLOW,
         &Transform3D::from_translation_scale([0.0, 0.0, 0.0], [1.0, -1.0, 1.0]),
@@ -57,22 +65,8 @@ fn log_screen_frames(rec: &RecordingStream) -> RecordingStreamResult<()> {
 /// true thickness, and a faint circle swept by the image window's corners that keeps the flow
 /// views' bounds steady while the window turns with the plate.
 fn log_plate(rec: &RecordingStream, thickness: f64, w: &FieldWindow) -> RecordingStreamResult<()> {
-    let h = (0.5 * thickness) as f32;
-    rec.log_static(
-        paths::OUTLINE,
-        &LineStrips2D::new([plate_outline(thickness), vec![[-0.5, 0.0], [0.5, 0.0]]])
-            .with_colors([Color::from_rgb(255, 255, 255)])
-            .with_radii([Radius::new_ui_points(1.5), Radius::new_scene_units(h)])
-            .with_draw_order(50.0),
-    )?;
-    let reach = [
-        w.x0.hypot(w.y0),
-        w.x0.hypot(w.y1),
-        w.x1.hypot(w.y0),
-        w.x1.hypot(w.y1),
-    ]
-    .into_iter()
-    .fold(0.0f64, f64::max) as f32;
+    rec.log_static(paths::OUTLINE, &plate_drawing(thickness, 0.0))?;
+    let reach = window_reach(w) as f32;
     let circle: Vec<[f32; 2]> = (0..=128)
         .map(|k| {
             let a = k as f32 / 128.0 * std::f32::consts::TAU;
@@ -87,10 +81,15 @@ fn log_plate(rec: &RecordingStream, thickness: f64, w: &FieldWindow) -> Recordin
     )
 }
 
-/// Each field image: its placement in body coordinates and its fixed colour scale.
-fn log_field_styles(rec: &RecordingStream, img: &ImageGrid) -> RecordingStreamResult<()> {
+/// Each field image under `base`: its placement in the frame of `base` (window corner and pixel
+/// size) and its fixed colour scale.
+fn log_field_styles(
+    rec: &RecordingStream,
+    base: &str,
+    img: &ImageGrid,
+) -> RecordingStreamResult<()> {
     for (name, colormap, lo, hi) in FIELD_SCALES {
-        let path = format!("{}/{name}", paths::PLATE);
+        let path = format!("{base}/{name}");
         rec.log_static(
             path.as_str(),
             &Transform3D::from_translation_scale(
@@ -110,43 +109,27 @@ fn log_field_styles(rec: &RecordingStream, img: &ImageGrid) -> RecordingStreamRe
     Ok(())
 }
 
-/// Axes of the α plots: x = ALPHA_SCALE·α over [−π, π] (ticks every π/2), y = value (ticks every
-/// 1, labels every 2).
-fn log_polar_axes(rec: &RecordingStream) -> RecordingStreamResult<()> {
-    let pi = std::f32::consts::PI;
-    let ax = ALPHA_SCALE as f32;
-    let mut axes = vec![
-        vec![[-ax * pi, 0.0], [ax * pi, 0.0]],
-        vec![[0.0, -6.0], [0.0, 6.0]],
-    ];
-    for k in [-2.0f32, -1.0, 1.0, 2.0] {
-        axes.push(vec![[ax * k * pi / 2.0, -0.1], [ax * k * pi / 2.0, 0.1]]);
-    }
-    for k in (-6..=6).filter(|k| *k != 0) {
-        axes.push(vec![[-0.1, k as f32], [0.1, k as f32]]);
-    }
+/// The distance from the plate centre to the farthest corner of the window `w`: the radius the
+/// window sweeps as it turns with the plate.
+pub(super) fn window_reach(w: &FieldWindow) -> f64 {
+    [
+        w.x0.hypot(w.y0),
+        w.x0.hypot(w.y1),
+        w.x1.hypot(w.y0),
+        w.x1.hypot(w.y1),
+    ]
+    .into_iter()
+    .fold(0.0f64, f64::max)
+}
+
+/// A faint border of the wake window in the path frame (static): it shows the window's extent
+/// in the trajectory view, also before the first snapshot.
+fn log_wake_window(rec: &RecordingStream, w: &FieldWindow) -> RecordingStreamResult<()> {
+    let (x0, x1, y0, y1) = (w.x0 as f32, w.x1 as f32, w.y0 as f32, w.y1 as f32);
     rec.log_static(
-        paths::POLAR_AXES,
-        &LineStrips2D::new(axes)
-            .with_colors([Color::from_rgb(140, 140, 140)])
-            .with_radii([Radius::new_ui_points(0.6)]),
-    )?;
-    let mut label_pos = vec![
-        [ax * pi, 0.0],
-        [ax * pi / 2.0, 0.0],
-        [-ax * pi / 2.0, 0.0],
-        [-ax * pi, 0.0],
-    ];
-    let mut labels: Vec<String> = ["α = π", "π/2", "−π/2", "−π"].map(String::from).to_vec();
-    for k in [-6, -4, -2, 2, 4, 6] {
-        label_pos.push([0.0, k as f32]);
-        labels.push(k.to_string());
-    }
-    rec.log_static(
-        format!("{}/labels", paths::POLAR_AXES),
-        &Points2D::new(label_pos)
-            .with_labels(labels)
-            .with_radii([Radius::new_ui_points(1.0)])
-            .with_colors([Color::from_rgb(140, 140, 140)]),
+        paths::WAKE_WINDOW,
+        &LineStrips2D::new([[[x0, y0], [x1, y0], [x1, y1], [x0, y1], [x0, y0]]])
+            .with_colors([Color::from_unmultiplied_rgba(255, 255, 255, 60)])
+            .with_radii([Radius::new_ui_points(0.5)]),
     )
 }

@@ -12,7 +12,40 @@ fn code_block(lang: &str, body: &str) -> String {
     format!("{fence}{lang}\n{}\n{fence}\n", body.trim_end())
 }
 
-pub(super) fn config_markdown(info: &RunInfo, opts: &RecordOptions, img: &ImageGrid) -> String {
+/// "[lo, hi]".
+fn span(lo: f64, hi: f64) -> String {
+    format!("[{lo}, {hi}]")
+}
+
+/// The recording's own settings: the wake window and the plots' ranges.
+fn view_markdown(opts: &RecordOptions, wake: &ImageGrid) -> String {
+    let w = wake.window;
+    let plots = match opts.view.plot_ranges {
+        Some(r) => format!(
+            "coefficients open on [{:.2}, {:.2}], motion on [{:.2}, {:.2}] (zoom out for the start-up spike)",
+            r.coefficients[0], r.coefficients[1], r.motion[0], r.motion[1]
+        ),
+        None => "automatic ranges".to_string(),
+    };
+    format!(
+        "- **wake**: images {ww}×{wh} px over x in {xs} along the path and y in {ys} across it \
+         (chords; the plate at 0, the path's heading averaged over its last 4 chords).\n\
+         - **plots**: {plots}.\n",
+        ww = wake.width,
+        wh = wake.height,
+        xs = span(w.x0, w.x1),
+        ys = span(w.y0, w.y1),
+    )
+}
+
+/// The run configuration document: title, program, command line, recording settings, grid and
+/// the configuration JSON (`img` and `wake` are the close-up and wake image geometries).
+pub(super) fn config_markdown(
+    info: &RunInfo,
+    opts: &RecordOptions,
+    img: &ImageGrid,
+    wake: &ImageGrid,
+) -> String {
     let w = img.window;
     format!(
         "# {title}\n\n\
@@ -20,8 +53,9 @@ pub(super) fn config_markdown(info: &RunInfo, opts: &RecordOptions, img: &ImageG
          - **case**: {case}\n\
          - **command line**:\n\n{cmd}\n\
          - **recording**: field snapshots every {fe} c/U; images {iw}×{ih} px over \
-           x in [{x0}, {x1}], y in [{y0}, {y1}] (body axes, chords); streamlines and speed in frame \
+           x in {xs}, y in {ys} (body axes, chords); streamlines and speed in frame \
            {fr} ({frd}); timelines `time` (convective time t·U/c, shown as seconds) and `step`.\n\
+         {view}\
          - **grid**: {nx} × {ny} cells; plate thickness {th} c.\n\n\
          ## Configuration\n\n{json}",
         title = info.title,
@@ -31,16 +65,15 @@ pub(super) fn config_markdown(info: &RunInfo, opts: &RecordOptions, img: &ImageG
         fe = opts.field_every,
         iw = img.width,
         ih = img.height,
-        x0 = w.x0,
-        x1 = w.x1,
-        y0 = w.y0,
-        y1 = w.y1,
+        xs = span(w.x0, w.x1),
+        ys = span(w.y0, w.y1),
         fr = opts.streamlines_frame.number(),
         frd = opts.streamlines_frame.describe(),
         nx = info.grid.nx(),
         ny = info.grid.ny(),
         th = info.thickness,
         json = code_block("json", &info.config_json),
+        view = view_markdown(opts, wake),
     )
 }
 
