@@ -127,11 +127,24 @@ fn full_run_round_trips_through_the_rrd_file() {
         .entities_under(&format!("{}/", paths::TRAJECTORY))
         .is_empty());
     assert!(!d.entities_under(&format!("{}/", paths::STROBE)).is_empty());
-    assert_eq!(
-        d.entities_under(&format!("{}/", paths::POLAR_COEFFICIENTS))
-            .len(),
-        3
+    // The three curves C_L, C_D, C_M, and the plot's own axes with their labels.
+    let polar = d.entities_under(&format!("{}/", paths::POLAR_COEFFICIENTS));
+    let curves = ["cl", "cd", "cm"].map(|c| format!("{}/{c}", paths::POLAR_COEFFICIENTS));
+    for c in &curves {
+        assert!(
+            polar.iter().any(|e| e.starts_with(c.as_str())),
+            "{c} in {polar:?}"
+        );
+    }
+    let axes = format!("{}/axes", paths::POLAR_COEFFICIENTS);
+    assert!(
+        polar
+            .iter()
+            .all(|e| curves.iter().any(|c| e.starts_with(c.as_str()))
+                || e.starts_with(axes.as_str())),
+        "{polar:?}"
     );
+    assert!(d.statics.iter().any(|s| *s == axes), "static {axes}");
     // 2 time units at 0.5 per outline → 5 outlines (t = 0.01, 0.5, 1.0, 1.5, 2.0).
     let config = d.texts(paths::CONFIG).join("\n");
     assert!(config.contains("platefall free --synthetic"), "{config}");

@@ -291,15 +291,16 @@ fn an_interrupted_sweep_resumes_with_only_the_missing_cases() {
 #[test]
 fn failing_cases_are_listed_with_their_exit_codes_and_the_others_complete() {
     let dir = scratch("failing");
-    // cfl = 1.0 diverges (exit 3); a bad field window passes the plan check but fails when the
-    // case starts (exit 2).
+    // cfl = 1.0 diverges with the explicit far field (exit 3); a bad field window passes the plan
+    // check but fails when the case starts (exit 2).
     let p = plan(
         &dir,
         r#"case = "forced"
 [fixed]
 rate = 2
 resolution = 16
-t-end = 1
+t-end = 1.5
+far-field = "explicit"
 [zip]
 cfl = [0.5, 1.0, 0.5]
 field-window = ["-2.5,4,-2.5,2.5", "-2.5,4,-2.5,2.5", "1,0,0,1"]

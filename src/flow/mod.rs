@@ -18,8 +18,8 @@
 //!
 //! The hot path allocates nothing after [`FlowSolver::new`]. The u and v halves of each phase run
 //! in parallel (`rayon::join`); called from inside a rayon pool that allocates nothing either.
-mod advance_implicit;
 pub mod added_mass;
+mod advance_implicit;
 pub mod array;
 pub mod band;
 pub mod boundary;

@@ -218,7 +218,9 @@ fn set_coefficients(
     (sum.mean_cl, sum.mean_cd, sum.mean_cm) =
         (mean(Quantity::Cl), mean(Quantity::Cd), mean(Quantity::Cm));
     (sum.min_cl, sum.max_cl) = (cl_range.map(|r| r.0), cl_range.map(|r| r.1));
-    sum.max_cd = w.and_then(|w| h.range(Quantity::Cd, w.t0, w.t1)).map(|r| r.1);
+    sum.max_cd = w
+        .and_then(|w| h.range(Quantity::Cd, w.t0, w.t1))
+        .map(|r| r.1);
     if let (Case::Static { alpha, .. }, Some(f)) = (&config.case, freq) {
         (sum.strouhal_chord, sum.strouhal_width) = (Some(f), Some(f * alpha.sin().abs()));
     }
@@ -262,7 +264,9 @@ fn fall_keys(
     let Some((rw, class)) = motion else {
         return FallKeys::default();
     };
-    let descent = w.and_then(|w| h.mean(Quantity::Ydot, w.t0, w.t1)).map(|v| -v);
+    let descent = w
+        .and_then(|w| h.mean(Quantity::Ydot, w.t0, w.t1))
+        .map(|v| -v);
     let drift = w.and_then(|w| h.mean(Quantity::Xdot, w.t0, w.t1));
     FallKeys {
         regime: Some(class.regime.name().into()),
