@@ -159,11 +159,8 @@ use platefall::sim::{RunRecord, RunStatus};
 /// The card's free fall with today's explicit far field, turns 1–5 after release (the summary's
 /// developed part: whole turns 2..=5), measured once with `platefall free --resolution N
 /// --turns 5 --far-field explicit` (byte-identical to the scheme before issue 8): (mean V,
-/// mean θ̇, mean γ) in c/U units.
+/// mean θ̇, mean γ) in c/U units. (At N = 64 the same means were 1.1672, 2.4696, −0.3950.)
 const EXPLICIT_N32: (f64, f64, f64) = (1.156367689192568, 2.9623540744233803, -0.3734215277491281);
-const EXPLICIT_N64: (f64, f64, f64) =
-    (1.1671800289155436, 2.4696201937131903, -0.39501419012571615);
-
 /// Runs the card at N for 5 turns and compares its means with the explicit scheme's: V and θ̇
 /// within 2 %, γ within 0.02 rad. Returns the run.
 fn card_agrees_with_the_explicit_scheme(n: usize, explicit: (f64, f64, f64)) -> RunRecord {
@@ -223,10 +220,53 @@ fn the_card_at_n32_autorotates_as_with_the_explicit_far_field() {
     assert!(spt <= 1500.0, "{spt} steps per turn");
 }
 
+/// The card at N = 64 with today's explicit far field over its first two turns after release
+/// (time-weighted means from the release to the end of turn 2, [`first_turns`]): (mean V, mean θ̇,
+/// mean γ), measured once with `platefall free --resolution 64 --turns 5 --far-field explicit
+/// --coupling explicit --csv F`.
+const EXPLICIT_N64_TURNS_1_2: (f64, f64, f64) =
+    (1.208351812701081, 1.851101902493837, -0.5160949723563601);
+
+/// Time-weighted means of (V, θ̇, γ) from the release to the end of turn `turns`.
+fn first_turns(rec: &RunRecord, turns: f64) -> (f64, f64, f64) {
+    let s = &rec.samples[..];
+    let i0 = s.iter().position(|x| x.t >= rec.t_release - 1e-9).unwrap();
+    let mut acc = [0.0; 4];
+    for x in &s[i0 + 1..] {
+        acc = [
+            acc[0] + x.dt,
+            acc[1] + x.speed * x.dt,
+            acc[2] + x.omega * x.dt,
+            acc[3] + x.gamma * x.dt,
+        ];
+        if (x.theta - s[i0].theta).abs() >= turns * 2.0 * PI {
+            break;
+        }
+    }
+    (acc[1] / acc[0], acc[2] / acc[0], acc[3] / acc[0])
+}
+
 #[test]
-#[ignore = "N = 64: about 2 minutes on two cores (plus a 2-turn run at twice the extent)"]
-fn the_card_at_n64_autorotates_as_with_the_explicit_far_field_in_few_steps() {
-    let rec = card_agrees_with_the_explicit_scheme(64, EXPLICIT_N64);
+#[ignore = "N = 64: about 3 minutes on two cores (a 5-turn run and a 3-turn run at twice the extent)"]
+fn the_card_at_n64_follows_the_explicit_scheme_in_few_steps_at_any_extent() {
+    // At N = 64 the card's turns become irregular from the third turn on: the smallest change of
+    // the computation (a 2 % smaller CFL, or strong instead of explicit coupling, both with the
+    // explicit far field) changes the mean θ̇ of turns 3–5 by several per cent (README, "What the
+    // figures say"). Before that the motion is deterministic, so the first two turns after
+    // release are compared with the explicit scheme: V and θ̇ within 2 %, γ within 0.02 rad.
+    let (_, rec, _) = common::run(&["free", "--resolution", "64", "--turns", "5", "--no-save"]);
+    assert_eq!(rec.status, RunStatus::Completed);
+    let (v, w, g) = first_turns(&rec, 2.0);
+    let (ve, we, ge) = EXPLICIT_N64_TURNS_1_2;
+    eprintln!(
+        "N = 64, turns 1-2: V {v:.4} ({:+.2} %), θ̇ {w:.4} ({:+.2} %), γ {g:.4} ({:+.4} rad) against the explicit scheme",
+        100.0 * (v / ve - 1.0),
+        100.0 * (w / we - 1.0),
+        g - ge
+    );
+    assert!((v / ve - 1.0).abs() < 0.02, "mean V {v} vs {ve}");
+    assert!((w / we - 1.0).abs() < 0.02, "mean θ̇ {w} vs {we}");
+    assert!((g - ge).abs() < 0.02, "mean γ {g} vs {ge}");
     let spt = steps_per_turn(&rec);
     // Doubling the extent: the far field no longer sets Δt.
     let (_, wide, _) = common::run(&[

@@ -144,7 +144,7 @@ fn full_run_round_trips_through_the_rrd_file() {
                 || e.starts_with(axes.as_str())),
         "{polar:?}"
     );
-    assert!(d.statics.iter().any(|s| *s == axes), "static {axes}");
+    assert!(d.statics.contains(&axes), "static {axes}");
     // 2 time units at 0.5 per outline → 5 outlines (t = 0.01, 0.5, 1.0, 1.5, 2.0).
     let config = d.texts(paths::CONFIG).join("\n");
     assert!(config.contains("platefall free --synthetic"), "{config}");
