@@ -55,9 +55,11 @@ pub struct SolverArgs {
     #[arg(long, default_value_t = 0.005, allow_negative_numbers = true)]
     pub cc: f64,
     /// How the transport by the grid velocity is stepped outside the near field: `implicit`
-    /// (line solves; Δt follows the near field) or `explicit` (the scheme before issue 8, whose
-    /// Δt is bound by the far field's grid speed |θ̇| × extent).
-    #[arg(long, value_enum, default_value_t = FarFieldArg::Implicit)]
+    /// (line solves; Δt follows the near field), `explicit` (the scheme before issue 8, whose
+    /// Δt is bound by the far field's grid speed |θ̇| × extent), or `auto`: implicit for the
+    /// turning plates (forced, pinned, free), explicit for a static plate (whose grid does not
+    /// move, so the implicit step would only cost more).
+    #[arg(long, value_enum, default_value_t = FarFieldArg::Auto)]
     pub far_field: FarFieldArg,
     /// Half-width of the near field along x (chords): columns farther out take the grid
     /// transport along them implicitly (with --far-field implicit).
@@ -77,15 +79,29 @@ pub struct SolverArgs {
 /// `--far-field`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum FarFieldArg {
+    Auto,
     Explicit,
     Implicit,
 }
 
+impl FarFieldArg {
+    /// The scheme for a case; `auto` takes the implicit one unless the plate is static.
+    pub fn scheme_for(self, case: &Case) -> FarFieldScheme {
+        match (self, case) {
+            (FarFieldArg::Explicit, _) | (FarFieldArg::Auto, Case::Static { .. }) => {
+                FarFieldScheme::Explicit
+            }
+            _ => FarFieldScheme::Implicit,
+        }
+    }
+}
+
 impl From<FarFieldArg> for FarFieldScheme {
+    /// The scheme for a turning plate (`auto` is implicit).
     fn from(a: FarFieldArg) -> FarFieldScheme {
         match a {
             FarFieldArg::Explicit => FarFieldScheme::Explicit,
-            FarFieldArg::Implicit => FarFieldScheme::Implicit,
+            FarFieldArg::Auto | FarFieldArg::Implicit => FarFieldScheme::Implicit,
         }
     }
 }
@@ -258,12 +274,11 @@ impl SolverArgs {
         turns: Option<f64>,
     ) -> RunConfig {
         RunConfig {
-            case,
             grid: self.grid(),
             flow: FlowParams {
                 re: self.re.unwrap_or(default_re),
                 cfl: self.cfl,
-                far_field: self.far_field.into(),
+                far_field: self.far_field.scheme_for(&case),
                 near_x: self.near_x,
                 near_y: self.near_y,
                 ..FlowParams::default()
@@ -275,6 +290,7 @@ impl SolverArgs {
                 dt_max: self.dt_max,
                 cc: self.cc,
             },
+            case,
         }
     }
 }
