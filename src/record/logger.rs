@@ -9,11 +9,11 @@ use anyhow::Context as _;
 use crossbeam_channel::{bounded, Receiver, RecvTimeoutError, Sender, TrySendError};
 
 use super::csv::CsvWriter;
-use super::messages::{Message, RunInfo, RunOutcome};
+use super::messages::{ConnectReport, Message, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::output::{LinkCheck, OutputError};
 use super::progress::Progress;
-use super::viewer::{ConnectReport, LiveServer, Viewer};
+use super::viewer::{LiveServer, Viewer};
 use crate::sim::{FieldSnapshot, RunStatus, StepSample};
 
 /// State shared by the solver-side handle and the logger thread.

@@ -1,5 +1,7 @@
 //! The messages from the solver thread to the logger thread: the solver's own outputs
-//! ([`StepSample`], [`FieldSnapshot`]) plus what the recording needs around them.
+//! ([`StepSample`], [`FieldSnapshot`]) plus what the recording needs around them; and what the
+//! viewer side reports back about a live stream ([`ConnectReport`], the same with or without the
+//! `viewer` feature).
 use std::sync::Arc;
 
 use crate::grid::GridGeometry;
@@ -43,4 +45,16 @@ pub enum Message {
     /// A field snapshot, at the field cadence; may be thinned.
     Field(Box<FieldSnapshot>),
     Finish(RunOutcome),
+}
+
+/// What a --connect / --spawn stream did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConnectReport {
+    pub url: String,
+    /// Messages handed to the gRPC client.
+    pub sent: u64,
+    /// Messages dropped because the viewer did not keep up (or was not there).
+    pub dropped: u64,
+    /// True if a viewer was connected at some point.
+    pub ever_connected: bool,
 }

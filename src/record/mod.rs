@@ -150,10 +150,10 @@ pub mod viewer;
 
 pub use csv::{CSV_HEADER, CSV_TRAILER};
 pub use logger::{spawn_logger, Logger, LoggerReport};
+pub use messages::ConnectReport;
 pub use options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
 };
 pub use view_options::{ViewOptions, DEFAULT_WAKE_RES};
-pub use viewer::ConnectReport;
 #[cfg(feature = "viewer")]
 pub use viewer::{paths, APPLICATION_ID};

@@ -3,22 +3,13 @@
 //! (`cli::record_args`), and the logger records CSV and progress only.
 use std::path::PathBuf;
 
-use super::messages::{RunInfo, RunOutcome};
+use super::messages::{ConnectReport, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::output::OutputError;
 use crate::sim::{FieldSnapshot, StepSample};
 
 /// This build cannot record for Rerun.
 pub const AVAILABLE: bool = false;
-
-/// What a --connect stream did (never, in this build).
-#[derive(Clone, Debug, PartialEq)]
-pub struct ConnectReport {
-    pub url: String,
-    pub sent: u64,
-    pub dropped: u64,
-    pub ever_connected: bool,
-}
 
 /// A --serve server (none can exist in this build).
 pub enum LiveServer {}

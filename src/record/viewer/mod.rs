@@ -23,7 +23,7 @@ use std::time::Duration;
 use anyhow::Context as _;
 use rerun::RecordingStream;
 
-use super::messages::{RunInfo, RunOutcome};
+use super::messages::{ConnectReport, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::output::OutputError;
 use crate::sim::{FieldSnapshot, StepSample};
@@ -37,18 +37,6 @@ pub const AVAILABLE: bool = true;
 
 /// Rerun application id of every recording.
 pub const APPLICATION_ID: &str = "platefall";
-
-/// What a --connect / --spawn stream did.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ConnectReport {
-    pub url: String,
-    /// Messages handed to the gRPC client.
-    pub sent: u64,
-    /// Messages dropped because the viewer did not keep up (or was not there).
-    pub dropped: u64,
-    /// True if a viewer was connected at some point.
-    pub ever_connected: bool,
-}
 
 /// What the viewer side produced, after [`Viewer::finish`].
 pub struct ViewerReport {
