@@ -29,6 +29,7 @@ pub mod metrics;
 pub mod momentum;
 pub mod plate;
 pub mod pressure;
+mod split_cholesky;
 pub mod transport;
 pub mod zones;
 

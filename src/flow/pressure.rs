@@ -3,37 +3,35 @@
 //! With the predicted velocity u*, find φ with  Σ_faces A_f ∂φ/∂n = Σ_faces A_f u*·n  in every fluid
 //! cell, then u = u* − ∇φ and p = φ/Δt. Faces on the outer boundary and on the plate carry prescribed
 //! normal velocities, so ∂φ/∂n = 0 there (Neumann). The operator is the same at every step because
-//! the grid is rigid; it is factored once by a sparse Cholesky (faer,
-//! simplicial with an AMD ordering). The Neumann null space is removed by pinning φ = 0 in
+//! the grid is rigid; it is factored once by a sparse Cholesky whose order splits the grid at its
+//! middle column so that both halves are solved at once (`split_cholesky.rs`). The Neumann null space is removed by pinning φ = 0 in
 //! one far-field corner cell; the right-hand side is made compatible beforehand by the outer boundary
 //! condition (zero net flux), so the pinned cell's own equation holds too.
-use faer::dyn_stack::{MemBuffer, MemStack};
-use faer::linalg::cholesky::llt::factor::LltRegularization;
-use faer::sparse::linalg::cholesky::{
-    factorize_symbolic_cholesky, CholeskySymbolicParams, LltRef, SymbolicCholesky,
-    SymmetricOrdering,
-};
-use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMat, Triplet};
-use faer::{Conj, MatMut, Par, Side};
+use rayon::prelude::*;
 
 use super::array::Padded;
 use super::metrics::Metrics;
+use super::split_cholesky::{Part, SplitCholesky};
 use crate::grid::Grid;
 
 const NONE: u32 = u32::MAX;
 
+/// Cells per task of the loops over all cells (in parallel on the pool's threads).
+const CHUNK: usize = 4096;
+
 pub struct Pressure {
     nx: usize,
     ny: usize,
-    /// Unknown number of each cell (NONE for plate cells and the pinned cell).
+    /// Unknown number of each cell in the factor's order (NONE for plate cells and the pinned
+    /// cell).
     unknown: Vec<u32>,
     /// Whether each cell is fluid.
     fluid: Vec<bool>,
-    symbolic: SymbolicCholesky<u32>,
-    values: Vec<f64>,
-    stack: MemBuffer,
-    /// Right-hand side / solution, one entry per unknown.
+    factor: SplitCholesky,
+    /// The cell of each unknown (the inverse of `unknown`).
+    cell_of: Vec<u32>,
+    /// Right-hand side / solution, one entry per unknown, in the factor's order.
     rhs: Vec<f64>,
     /// φ on all cells (0 on plate and pinned cells).
     pub phi: Vec<f64>,
@@ -70,16 +68,30 @@ impl Pressure {
             }
         }
         let a = assemble(grid, m, &fluid, &unknown, count as usize)?;
-        let (symbolic, values, stack) = factor(&a)?;
+        let mut part = vec![Part::Separator; count as usize];
+        for (k, &r) in unknown.iter().enumerate() {
+            if r != NONE {
+                part[r as usize] = match (k % nx).cmp(&(nx / 2)) {
+                    std::cmp::Ordering::Less => Part::Left,
+                    std::cmp::Ordering::Greater => Part::Right,
+                    std::cmp::Ordering::Equal => Part::Separator,
+                };
+            }
+        }
+        let factor = SplitCholesky::new(a.as_ref(), &part).map_err(PressureError)?;
+        let mut cell_of = vec![0u32; count as usize];
+        for (k, r) in unknown.iter_mut().enumerate().filter(|(_, r)| **r != NONE) {
+            *r = factor.position[*r as usize];
+            cell_of[*r as usize] = k as u32;
+        }
         Ok(Pressure {
             nx,
             ny,
             unknown,
             fluid,
-            factor_nnz: values.len(),
-            symbolic,
-            values,
-            stack,
+            factor_nnz: factor.nnz,
+            factor,
+            cell_of,
             rhs: vec![0.0; count as usize],
             phi: vec![0.0; nx * ny],
         })
@@ -136,50 +148,55 @@ impl Pressure {
 
     /// Solves (−L) φ = −div u* and scatters φ onto the cells (0 on plate and pinned cells).
     fn solve_phi(&mut self, u: &Padded, v: &Padded, grid: &Grid) {
-        let (nx, ny) = (self.nx, self.ny);
-        for j in 0..ny {
-            for i in 0..nx {
-                let r = self.unknown[i + nx * j];
-                if r != NONE {
-                    self.rhs[r as usize] = -Self::cell_flux(u, v, grid, i, j);
-                }
-            }
-        }
-        let llt = LltRef::<u32, f64>::new(&self.symbolic, &self.values);
-        let n = self.rhs.len();
-        let rhs = MatMut::from_column_major_slice_mut(&mut self.rhs, n, 1);
-        llt.solve_in_place_with_conj(Conj::No, rhs, Par::Seq, MemStack::new(&mut self.stack));
-        for (k, phi) in self.phi.iter_mut().enumerate() {
-            let r = self.unknown[k];
-            *phi = if r != NONE { self.rhs[r as usize] } else { 0.0 };
-        }
+        let nx = self.nx;
+        let cells = &self.cell_of;
+        self.rhs
+            .par_iter_mut()
+            .zip(cells.par_iter())
+            .with_min_len(CHUNK)
+            .for_each(|(r, &k)| {
+                let k = k as usize;
+                *r = -Self::cell_flux(u, v, grid, k % nx, k / nx);
+            });
+        self.factor.solve_in_place(&mut self.rhs);
+        let (rhs, unknown) = (&self.rhs, &self.unknown);
+        self.phi
+            .par_iter_mut()
+            .zip(unknown.par_iter())
+            .with_min_len(CHUNK)
+            .for_each(|(phi, &r)| *phi = if r != NONE { rhs[r as usize] } else { 0.0 });
     }
 
     /// u = u* − ∇φ on every face between two fluid cells.
     fn correct_velocity(&self, u: &mut Padded, v: &mut Padded, m: &Metrics) {
         let (nx, ny) = (self.nx, self.ny);
         let (phi, fluid) = (&self.phi, &self.fluid);
-        for j in 0..ny {
-            let jj = j as isize;
-            for i in 1..nx {
-                let k = i + nx * j;
-                if fluid[k] && fluid[k - 1] {
-                    let g = (phi[k] - phi[k - 1]) / m.x.centre_gap(i as isize);
-                    let idx = u.at(i as isize, jj);
-                    u.data[idx] -= g;
+        let along_x = || {
+            for j in 0..ny {
+                let jj = j as isize;
+                for i in 1..nx {
+                    let k = i + nx * j;
+                    if fluid[k] && fluid[k - 1] {
+                        let g = (phi[k] - phi[k - 1]) / m.x.centre_gap(i as isize);
+                        let idx = u.at(i as isize, jj);
+                        u.data[idx] -= g;
+                    }
                 }
             }
-        }
-        for j in 1..ny {
-            let inv = 1.0 / m.y.centre_gap(j as isize);
-            for i in 0..nx {
-                let k = i + nx * j;
-                if fluid[k] && fluid[k - nx] {
-                    let idx = v.at(i as isize, j as isize);
-                    v.data[idx] -= (phi[k] - phi[k - nx]) * inv;
+        };
+        let along_y = || {
+            for j in 1..ny {
+                let inv = 1.0 / m.y.centre_gap(j as isize);
+                for i in 0..nx {
+                    let k = i + nx * j;
+                    if fluid[k] && fluid[k - nx] {
+                        let idx = v.at(i as isize, j as isize);
+                        v.data[idx] -= (phi[k] - phi[k - nx]) * inv;
+                    }
                 }
             }
-        }
+        };
+        rayon::join(along_x, along_y);
     }
 
     /// p = φ/Δt (or p += φ/Δt), φ shifted so that its mean over the outermost ring of cells is
@@ -199,13 +216,16 @@ impl Pressure {
             }
         }
         let shift = ring / count as f64;
-        for (k, pk) in p.iter_mut().enumerate() {
-            *pk = match (fluid[k], update) {
-                (false, _) => 0.0,
-                (true, PressureUpdate::Replace) => (phi[k] - shift) * inv_dt,
-                (true, PressureUpdate::Increment) => *pk + (phi[k] - shift) * inv_dt,
-            };
-        }
+        p.par_iter_mut()
+            .zip(phi.par_iter().zip(fluid.par_iter()))
+            .with_min_len(CHUNK)
+            .for_each(|(pk, (&phi, &fluid))| {
+                *pk = match (fluid, update) {
+                    (false, _) => 0.0,
+                    (true, PressureUpdate::Replace) => (phi - shift) * inv_dt,
+                    (true, PressureUpdate::Increment) => *pk + (phi - shift) * inv_dt,
+                };
+            });
     }
 }
 
@@ -253,38 +273,4 @@ fn assemble(
     }
     SparseColMat::<u32, f64>::try_new_from_triplets(n, n, &trip)
         .map_err(|e| PressureError(format!("assembling the pressure matrix: {e:?}")))
-}
-
-/// Symbolic and numeric Cholesky factorisation, and a workspace big enough for both and the solve.
-///
-/// Simplicial AMD: measured fastest for the single right-hand side solved every step
-/// (`platefall bench`: at N = 128 the projection costs 65 ns/cell with it, 122–140 ns/cell
-/// supernodal with AMD or with a geometric nested dissection).
-fn factor(
-    a: &SparseColMat<u32, f64>,
-) -> Result<(SymbolicCholesky<u32>, Vec<f64>, MemBuffer), PressureError> {
-    let params = CholeskySymbolicParams {
-        supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
-        ..Default::default()
-    };
-    let symbolic =
-        factorize_symbolic_cholesky(a.symbolic(), Side::Lower, SymmetricOrdering::Amd, params)
-            .map_err(|e| PressureError(format!("symbolic Cholesky: {e:?}")))?;
-    let mut values = vec![0.0; symbolic.len_val()];
-    let req = symbolic
-        .factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default())
-        .or(symbolic.solve_in_place_scratch::<f64>(1, Par::Seq));
-    let mut stack = MemBuffer::new(req);
-    symbolic
-        .factorize_numeric_llt(
-            &mut values,
-            a.as_ref(),
-            Side::Lower,
-            LltRegularization::default(),
-            Par::Seq,
-            MemStack::new(&mut stack),
-            Default::default(),
-        )
-        .map_err(|e| PressureError(format!("numeric Cholesky: {e:?}")))?;
-    Ok((symbolic, values, stack))
 }
