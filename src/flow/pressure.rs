@@ -4,11 +4,10 @@
 //! cell, then u = u* − ∇φ and p = φ/Δt. Faces on the outer boundary and on the plate carry prescribed
 //! normal velocities, so ∂φ/∂n = 0 there (Neumann). The operator is the same at every step because
 //! the grid is rigid; it is factored once by a sparse Cholesky whose order splits the grid at its
-//! middle column so that both halves are solved at once (`split_cholesky.rs`). The Neumann null space is removed by pinning φ = 0 in
-//! one far-field corner cell; the right-hand side is made compatible beforehand by the outer boundary
+//! middle column, so that both halves are solved at once (`split_cholesky.rs`). The Neumann null
+//! space is removed by pinning φ = 0 in one far-field corner cell; the right-hand side is made compatible beforehand by the outer boundary
 //! condition (zero net flux), so the pinned cell's own equation holds too.
 use faer::sparse::{SparseColMat, Triplet};
-use rayon::prelude::*;
 
 use super::array::Padded;
 use super::metrics::Metrics;
@@ -16,9 +15,6 @@ use super::split_cholesky::{Part, SplitCholesky};
 use crate::grid::Grid;
 
 const NONE: u32 = u32::MAX;
-
-/// Cells per task of the loops over all cells (in parallel on the pool's threads).
-const CHUNK: usize = 4096;
 
 pub struct Pressure {
     nx: usize,
@@ -29,8 +25,6 @@ pub struct Pressure {
     /// Whether each cell is fluid.
     fluid: Vec<bool>,
     factor: SplitCholesky,
-    /// The cell of each unknown (the inverse of `unknown`).
-    cell_of: Vec<u32>,
     /// Right-hand side / solution, one entry per unknown, in the factor's order.
     rhs: Vec<f64>,
     /// φ on all cells (0 on plate and pinned cells).
@@ -69,20 +63,12 @@ impl Pressure {
         }
         let a = assemble(grid, m, &fluid, &unknown, count as usize)?;
         let mut part = vec![Part::Separator; count as usize];
-        for (k, &r) in unknown.iter().enumerate() {
-            if r != NONE {
-                part[r as usize] = match (k % nx).cmp(&(nx / 2)) {
-                    std::cmp::Ordering::Less => Part::Left,
-                    std::cmp::Ordering::Greater => Part::Right,
-                    std::cmp::Ordering::Equal => Part::Separator,
-                };
-            }
+        for (k, &r) in unknown.iter().enumerate().filter(|(_, &r)| r != NONE) {
+            part[r as usize] = Part::of_column(k % nx, nx / 2);
         }
         let factor = SplitCholesky::new(a.as_ref(), &part).map_err(PressureError)?;
-        let mut cell_of = vec![0u32; count as usize];
-        for (k, r) in unknown.iter_mut().enumerate().filter(|(_, r)| **r != NONE) {
+        for r in unknown.iter_mut().filter(|r| **r != NONE) {
             *r = factor.position[*r as usize];
-            cell_of[*r as usize] = k as u32;
         }
         Ok(Pressure {
             nx,
@@ -91,7 +77,6 @@ impl Pressure {
             fluid,
             factor_nnz: factor.nnz,
             factor,
-            cell_of,
             rhs: vec![0.0; count as usize],
             phi: vec![0.0; nx * ny],
         })
@@ -148,55 +133,47 @@ impl Pressure {
 
     /// Solves (−L) φ = −div u* and scatters φ onto the cells (0 on plate and pinned cells).
     fn solve_phi(&mut self, u: &Padded, v: &Padded, grid: &Grid) {
-        let nx = self.nx;
-        let cells = &self.cell_of;
-        self.rhs
-            .par_iter_mut()
-            .zip(cells.par_iter())
-            .with_min_len(CHUNK)
-            .for_each(|(r, &k)| {
-                let k = k as usize;
-                *r = -Self::cell_flux(u, v, grid, k % nx, k / nx);
-            });
+        let (nx, ny) = (self.nx, self.ny);
+        for j in 0..ny {
+            for i in 0..nx {
+                let r = self.unknown[i + nx * j];
+                if r != NONE {
+                    self.rhs[r as usize] = -Self::cell_flux(u, v, grid, i, j);
+                }
+            }
+        }
         self.factor.solve_in_place(&mut self.rhs);
-        let (rhs, unknown) = (&self.rhs, &self.unknown);
-        self.phi
-            .par_iter_mut()
-            .zip(unknown.par_iter())
-            .with_min_len(CHUNK)
-            .for_each(|(phi, &r)| *phi = if r != NONE { rhs[r as usize] } else { 0.0 });
+        for (k, phi) in self.phi.iter_mut().enumerate() {
+            let r = self.unknown[k];
+            *phi = if r != NONE { self.rhs[r as usize] } else { 0.0 };
+        }
     }
 
     /// u = u* − ∇φ on every face between two fluid cells.
     fn correct_velocity(&self, u: &mut Padded, v: &mut Padded, m: &Metrics) {
         let (nx, ny) = (self.nx, self.ny);
         let (phi, fluid) = (&self.phi, &self.fluid);
-        let along_x = || {
-            for j in 0..ny {
-                let jj = j as isize;
-                for i in 1..nx {
-                    let k = i + nx * j;
-                    if fluid[k] && fluid[k - 1] {
-                        let g = (phi[k] - phi[k - 1]) / m.x.centre_gap(i as isize);
-                        let idx = u.at(i as isize, jj);
-                        u.data[idx] -= g;
-                    }
+        for j in 0..ny {
+            let jj = j as isize;
+            for i in 1..nx {
+                let k = i + nx * j;
+                if fluid[k] && fluid[k - 1] {
+                    let g = (phi[k] - phi[k - 1]) / m.x.centre_gap(i as isize);
+                    let idx = u.at(i as isize, jj);
+                    u.data[idx] -= g;
                 }
             }
-        };
-        let along_y = || {
-            for j in 1..ny {
-                let inv = 1.0 / m.y.centre_gap(j as isize);
-                for i in 0..nx {
-                    let k = i + nx * j;
-                    if fluid[k] && fluid[k - nx] {
-                        let idx = v.at(i as isize, j as isize);
-                        v.data[idx] -= (phi[k] - phi[k - nx]) * inv;
-                    }
+        }
+        for j in 1..ny {
+            let inv = 1.0 / m.y.centre_gap(j as isize);
+            for i in 0..nx {
+                let k = i + nx * j;
+                if fluid[k] && fluid[k - nx] {
+                    let idx = v.at(i as isize, j as isize);
+                    v.data[idx] -= (phi[k] - phi[k - nx]) * inv;
                 }
             }
-        };
-        rayon::join(along_x, along_y);
+        }
     }
 
     /// p = φ/Δt (or p += φ/Δt), φ shifted so that its mean over the outermost ring of cells is
@@ -216,16 +193,13 @@ impl Pressure {
             }
         }
         let shift = ring / count as f64;
-        p.par_iter_mut()
-            .zip(phi.par_iter().zip(fluid.par_iter()))
-            .with_min_len(CHUNK)
-            .for_each(|(pk, (&phi, &fluid))| {
-                *pk = match (fluid, update) {
-                    (false, _) => 0.0,
-                    (true, PressureUpdate::Replace) => (phi - shift) * inv_dt,
-                    (true, PressureUpdate::Increment) => *pk + (phi - shift) * inv_dt,
-                };
-            });
+        for (k, pk) in p.iter_mut().enumerate() {
+            *pk = match (fluid[k], update) {
+                (false, _) => 0.0,
+                (true, PressureUpdate::Replace) => (phi[k] - shift) * inv_dt,
+                (true, PressureUpdate::Increment) => *pk + (phi[k] - shift) * inv_dt,
+            };
+        }
     }
 }
 

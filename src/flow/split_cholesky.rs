@@ -12,18 +12,22 @@
 //!
 //! so the forward solve runs both halves at once (each gathers its updates to the separator in its
 //! own buffer), then the small separator block; the backward solve does the separator, then both
-//! halves at once. The factor itself is faer's simplicial LLᵀ with this ordering; only its two
+//! halves at once. The factor itself is faer's simplicial LLᵀ with this ordering (simplicial
+//! measured faster than supernodal for the one right-hand side solved each step); only its two
 //! triangular solves are done here. The result does not depend on the number of threads: every
-//! sum is taken in the same order.
+//! sum is taken in the same order. Both cores stream half the factor each, so the solve takes
+//! about half the time where memory bandwidth allows (README, "Performance").
+use std::ops::Range;
+
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
+use faer::perm::PermRef;
 use faer::sparse::linalg::amd;
 use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky, CholeskySymbolicParams, SymbolicCholeskyRaw, SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMat, SparseColMatRef, Triplet};
-use faer::perm::PermRef;
 use faer::{Par, Side};
 
 /// Which block an unknown belongs to.
@@ -32,6 +36,17 @@ pub enum Part {
     Left,
     Right,
     Separator,
+}
+
+impl Part {
+    /// The block of a cell in `column` when the separator is column `middle`.
+    pub fn of_column(column: usize, middle: usize) -> Part {
+        match column.cmp(&middle) {
+            std::cmp::Ordering::Less => Part::Left,
+            std::cmp::Ordering::Greater => Part::Right,
+            std::cmp::Ordering::Equal => Part::Separator,
+        }
+    }
 }
 
 /// Columns `start..start + n` of L: their rows lie in the same block or in the separator.
@@ -71,28 +86,31 @@ impl SplitCholesky {
         let mut starts = [0usize; 3];
         for (b, &which) in blocks.iter().enumerate() {
             starts[b] = order.len();
-            let members: Vec<u32> = (0..n as u32).filter(|&r| part[r as usize] == which).collect();
+            let members: Vec<u32> = (0..n as u32)
+                .filter(|&r| part[r as usize] == which)
+                .collect();
             if which == Part::Separator {
                 order.extend_from_slice(&members);
             } else {
-                order.extend(amd_order(a, &members)?.into_iter().map(|k| members[k as usize]));
+                order.extend(
+                    amd_order(a, &members)?
+                        .into_iter()
+                        .map(|k| members[k as usize]),
+                );
             }
         }
         let mut position = vec![0u32; n];
         for (new, &old) in order.iter().enumerate() {
             position[old as usize] = new as u32;
         }
-        let (col_ptr, row_idx, values) = factor(a, &order, &position)?;
-        let ns = n - starts[2];
-        let block = |b: usize, end: usize| {
-            Block::from_factor(&col_ptr, &row_idx, &values, starts[b], end, starts[2], ns)
-        };
+        let l = factor(a, &order, &position)?;
+        let block = |b: usize, end: usize| Block::from_factor(&l, starts[b]..end, starts[2]);
         Ok(SplitCholesky {
             left: block(0, starts[1])?,
             right: block(1, starts[2])?,
             separator: block(2, n)?,
             position,
-            nnz: values.len(),
+            nnz: l.values.len(),
         })
     }
 
@@ -102,7 +120,11 @@ impl SplitCholesky {
         let (xl, xr) = halves.split_at_mut(self.right.start);
         let (left, right) = (&mut self.left, &mut self.right);
         rayon::join(|| left.forward(xl), || right.forward(xr));
-        for ((s, a), b) in sep.iter_mut().zip(&left.to_separator).zip(&right.to_separator) {
+        for ((s, a), b) in sep
+            .iter_mut()
+            .zip(&left.to_separator)
+            .zip(&right.to_separator)
+        {
             *s += a + b;
         }
         self.separator.forward(sep);
@@ -113,20 +135,17 @@ impl SplitCholesky {
 }
 
 impl Block {
-    /// Columns `start..end` of L (given in CSC with the diagonal first in each column); rows at or
-    /// beyond `sep_start` belong to the separator, of size `ns`.
-    fn from_factor(
-        col_ptr: &[u32],
-        row_idx: &[u32],
-        values: &[f64],
-        start: usize,
-        end: usize,
-        sep_start: usize,
-        ns: usize,
-    ) -> Result<Block, String> {
+    /// The given columns of L; rows at or beyond `sep_start` belong to the separator.
+    fn from_factor(l: &Csc, columns: Range<usize>, sep_start: usize) -> Result<Block, String> {
+        let (start, end) = (columns.start, columns.end);
+        let (col_ptr, row_idx, values) = (&l.col_ptr, &l.row_idx, &l.values);
         let n = end - start;
         // The separator's own block has no rows outside it.
-        let ns = if start == sep_start { 0 } else { ns };
+        let ns = if start == sep_start {
+            0
+        } else {
+            l.col_ptr.len() - 1 - sep_start
+        };
         let mut b = Block {
             start,
             ptr: Vec::with_capacity(n + 1),
@@ -142,7 +161,9 @@ impl Block {
         for c in start..end {
             let (lo, hi) = (col_ptr[c] as usize, col_ptr[c + 1] as usize);
             if row_idx[lo] as usize != c || values[lo] <= 0.0 {
-                return Err(format!("column {c} of the factor does not start with its diagonal"));
+                return Err(format!(
+                    "column {c} of the factor does not start with its diagonal"
+                ));
             }
             b.inv_diag.push(1.0 / values[lo]);
             outside.clear();
@@ -154,7 +175,9 @@ impl Block {
                 } else if r >= sep_start {
                     outside.push(((r - sep_start) as u32, values[k]));
                 } else {
-                    return Err(format!("the factor couples the two halves (row {r}, column {c})"));
+                    return Err(format!(
+                        "the factor couples the two halves (row {r}, column {c})"
+                    ));
                 }
             }
             b.mid.push(b.row.len() as u32);
@@ -176,7 +199,11 @@ impl Block {
         for j in 0..n {
             let xj = x[j] * self.inv_diag[j];
             x[j] = xj;
-            let (a, m, b) = (self.ptr[j] as usize, self.mid[j] as usize, self.ptr[j + 1] as usize);
+            let (a, m, b) = (
+                self.ptr[j] as usize,
+                self.mid[j] as usize,
+                self.ptr[j + 1] as usize,
+            );
             scatter(&self.row[a..m], &self.val[a..m], xj, x);
             scatter(&self.row[m..b], &self.val[m..b], xj, &mut self.to_separator);
         }
@@ -185,10 +212,22 @@ impl Block {
     /// L_bᵀ x = y on this block's columns, in place, with the separator's solution `sep` known.
     fn backward(&self, x: &mut [f64], sep: &[f64]) {
         let n = self.inv_diag.len();
-        assert_eq!(x.len(), n, "a block's backward solve needs its own unknowns");
-        assert_eq!(sep.len(), self.ns, "a block's backward solve needs the separator");
+        assert_eq!(
+            x.len(),
+            n,
+            "a block's backward solve needs its own unknowns"
+        );
+        assert_eq!(
+            sep.len(),
+            self.ns,
+            "a block's backward solve needs the separator"
+        );
         for j in (0..n).rev() {
-            let (a, m, b) = (self.ptr[j] as usize, self.mid[j] as usize, self.ptr[j + 1] as usize);
+            let (a, m, b) = (
+                self.ptr[j] as usize,
+                self.mid[j] as usize,
+                self.ptr[j + 1] as usize,
+            );
             let own = dot(&self.row[a..m], &self.val[a..m], x);
             let outside = dot(&self.row[m..b], &self.val[m..b], sep);
             x[j] = (x[j] - own - outside) * self.inv_diag[j];
@@ -252,13 +291,20 @@ fn amd_order(a: SparseColMatRef<'_, u32, f64>, members: &[u32]) -> Result<Vec<u3
     Ok(perm)
 }
 
+/// A lower-triangular factor, column by column, the diagonal first in each column.
+struct Csc {
+    col_ptr: Vec<u32>,
+    row_idx: Vec<u32>,
+    values: Vec<f64>,
+}
+
 /// Simplicial LLᵀ of `a` (lower triangle) with unknown `order[k]` in place k (`position` is the
 /// inverse): the factor's column pointers, row indices and values.
 fn factor(
     a: SparseColMatRef<'_, u32, f64>,
     order: &[u32],
     position: &[u32],
-) -> Result<(Vec<u32>, Vec<u32>, Vec<f64>), String> {
+) -> Result<Csc, String> {
     let perm = PermRef::new_checked(order, position, order.len());
     let params = CholeskySymbolicParams {
         supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
@@ -288,7 +334,11 @@ fn factor(
     let SymbolicCholeskyRaw::Simplicial(s) = symbolic.raw() else {
         return Err("the Cholesky factor is not simplicial".into());
     };
-    Ok((s.col_ptr().to_vec(), s.row_idx().to_vec(), values))
+    Ok(Csc {
+        col_ptr: s.col_ptr().to_vec(),
+        row_idx: s.row_idx().to_vec(),
+        values,
+    })
 }
 
 #[cfg(test)]
@@ -318,18 +368,21 @@ mod tests {
         let (nx, ny) = (23, 17);
         let a = laplacian(nx, ny);
         let part: Vec<Part> = (0..nx * ny)
-            .map(|k| match (k % nx).cmp(&(nx / 2)) {
-                std::cmp::Ordering::Less => Part::Left,
-                std::cmp::Ordering::Greater => Part::Right,
-                std::cmp::Ordering::Equal => Part::Separator,
-            })
+            .map(|k| Part::of_column(k % nx, nx / 2))
             .collect();
         let mut f = SplitCholesky::new(a.as_ref(), &part).unwrap();
-        let exact: Vec<f64> = (0..nx * ny).map(|k| ((k * 7919) % 101) as f64 - 50.0).collect();
+        let exact: Vec<f64> = (0..nx * ny)
+            .map(|k| ((k * 7919) % 101) as f64 - 50.0)
+            .collect();
         // b = A x with A symmetric, from its lower triangle.
         let mut b = vec![0.0; nx * ny];
         for c in 0..nx * ny {
-            for (&r, &v) in a.symbolic().row_idx_of_col_raw(c).iter().zip(a.val_of_col(c)) {
+            for (&r, &v) in a
+                .symbolic()
+                .row_idx_of_col_raw(c)
+                .iter()
+                .zip(a.val_of_col(c))
+            {
                 let r = r as usize;
                 b[r] += v * exact[c];
                 if r != c {
@@ -351,8 +404,9 @@ mod tests {
     #[test]
     fn refuses_coupled_halves() {
         let a = laplacian(4, 3);
-        let part: Vec<Part> =
-            (0..12).map(|k| if k % 4 < 2 { Part::Left } else { Part::Right }).collect();
+        let part: Vec<Part> = (0..12)
+            .map(|k| if k % 4 < 2 { Part::Left } else { Part::Right })
+            .collect();
         assert!(SplitCholesky::new(a.as_ref(), &part).is_err());
     }
 }

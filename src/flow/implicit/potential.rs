@@ -1,6 +1,4 @@
 //! The incremental pressure of the implicit far field (SPEC §3): p += A φ/Δt.
-use rayon::prelude::*;
-
 use super::{line_velocity, Part};
 use crate::flow::frame::Frame;
 use crate::flow::metrics::{Component, Metrics};
@@ -28,38 +26,26 @@ pub fn factored_potential(
     t: f64,
 ) {
     let (nx, ny) = (grid.nx, grid.ny);
-    let columns = |j: usize, out: &mut [f64]| {
-        out.copy_from_slice(&phi[nx * j..nx * (j + 1)]);
-        for i in (0..nx).filter(|&i| z.v_col[i]) {
-            let w = -line_velocity(m, f, Component::V, false, i as isize);
+    scratch.copy_from_slice(phi);
+    for i in (0..nx).filter(|&i| z.v_col[i]) {
+        let w = -line_velocity(m, f, Component::V, false, i as isize);
+        for j in 0..ny {
             let c = u.oy.implicit_row(j, w, t);
-            out[i] = (0..5)
+            scratch[i + nx * j] = (0..5)
                 .map(|o| c[o] * phi[i + nx * (j + o).saturating_sub(2).min(ny - 1)])
                 .sum();
         }
-    };
-    by_rows(scratch, nx, columns);
-    let rows = |j: usize, out: &mut [f64]| {
-        let src = &scratch[nx * j..nx * (j + 1)];
-        if !z.u_row[j] {
-            out.copy_from_slice(src);
-            return;
-        }
+    }
+    phi.copy_from_slice(scratch);
+    for j in (0..ny).filter(|&j| z.u_row[j]) {
         let w = -line_velocity(m, f, Component::U, true, j as isize);
-        for (i, o) in out.iter_mut().enumerate() {
+        let src = &scratch[nx * j..nx * (j + 1)];
+        let dst = &mut phi[nx * j..nx * (j + 1)];
+        for (i, out) in dst.iter_mut().enumerate() {
             let c = v.ox.implicit_row(i, w, t);
-            *o = (0..5)
-                .map(|k| c[k] * src[(i + k).saturating_sub(2).min(nx - 1)])
+            *out = (0..5)
+                .map(|o| c[o] * src[(i + o).saturating_sub(2).min(nx - 1)])
                 .sum();
         }
-    };
-    by_rows(phi, nx, rows);
-}
-
-/// Fills `out` row by row (rows of `nx` cells, `fill(j, row)`), on the pool's threads.
-fn by_rows(out: &mut [f64], nx: usize, fill: impl Fn(usize, &mut [f64]) + Sync) {
-    out.par_chunks_mut(nx)
-        .enumerate()
-        .with_min_len(16)
-        .for_each(|(j, row)| fill(j, row));
+    }
 }
