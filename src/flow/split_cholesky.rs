@@ -228,8 +228,8 @@ impl Block {
                 self.mid[j] as usize,
                 self.ptr[j + 1] as usize,
             );
-            let own = dot(&self.row[a..m], &self.val[a..m], x);
             let outside = dot(&self.row[m..b], &self.val[m..b], sep);
+            let own = dot(&self.row[a..m], &self.val[a..m], x);
             x[j] = (x[j] - own - outside) * self.inv_diag[j];
         }
     }
@@ -243,20 +243,24 @@ fn scatter(rows: &[u32], vals: &[f64], s: f64, x: &mut [f64]) {
     }
 }
 
-/// Σ v_k x[r_k], in four partial sums: one running sum would wait for each addition in turn.
+/// Σ v_k x[r_k], in four partial sums (one running sum would wait for each addition in turn),
+/// from the last entry to the first: the backward solve then reads the factor in one descending
+/// stream, which the hardware prefetches (ascending within descending columns measured 2× slower
+/// once the factor no longer fits in the cache).
 #[inline(always)]
 fn dot(rows: &[u32], vals: &[f64], x: &[f64]) -> f64 {
     let at = |r: u32| x[r as usize];
-    let (rc, vc) = (rows.chunks_exact(4), vals.chunks_exact(4));
-    let mut tail = 0.0;
-    for (&r, &v) in rc.remainder().iter().zip(vc.remainder()) {
-        tail += v * at(r);
-    }
+    let (rc, vc) = (rows.rchunks_exact(4), vals.rchunks_exact(4));
+    let (rr, vr) = (rc.remainder(), vc.remainder());
     let mut acc = [0.0; 4];
     for (r, v) in rc.zip(vc) {
-        for l in 0..4 {
+        for l in (0..4).rev() {
             acc[l] += v[l] * at(r[l]);
         }
+    }
+    let mut tail = 0.0;
+    for (&r, &v) in rr.iter().zip(vr).rev() {
+        tail += v * at(r);
     }
     (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }
