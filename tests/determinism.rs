@@ -1,9 +1,15 @@
 //! The same command twice gives a byte-identical CSV and the same summary apart from the wall
-//! time (the solver is single-threaded and reads no clock; the logger never feeds back into it).
+//! time (the solver reads no clock, every parallel sum is taken in a fixed order, and the logger
+//! never feeds back into it), and so do one worker thread and two.
 use std::path::Path;
 use std::process::Command;
 
 fn run_twice(case: &[&str], name: &str) {
+    run_both(case, name, [&[], &[]]);
+}
+
+/// Runs `case` twice, with `extra[k]` added to run k, and compares the outputs.
+fn run_both(case: &[&str], name: &str, extra: [&[&str]; 2]) {
     let dir = std::env::temp_dir().join(format!("platefall-det-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -12,6 +18,7 @@ fn run_twice(case: &[&str], name: &str) {
         let (csv, json) = (dir.join(format!("{k}.csv")), dir.join(format!("{k}.json")));
         let out = Command::new(env!("CARGO_BIN_EXE_platefall"))
             .args(case)
+            .args(extra[k])
             .args(["--no-save", "--progress", "off", "--csv"])
             .arg(&csv)
             .arg("--summary")
@@ -60,4 +67,12 @@ fn the_same_free_fall_twice_gives_identical_outputs() {
         ],
         "free",
     );
+}
+
+#[test]
+fn one_worker_thread_and_two_give_identical_outputs() {
+    // The u and v halves of the step and the two halves of the pressure solve run on two workers
+    // or one after the other on one; N = 16 so that the pressure factor has real fill.
+    let case = ["free", "--resolution", "16", "--develop", "1", "--t-end", "2"];
+    run_both(&case, "threads", [&["--threads", "1"], &["--threads", "2"]]);
 }
