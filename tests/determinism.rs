@@ -14,11 +14,11 @@ fn run_both(case: &[&str], name: &str, extra: [&[&str]; 2]) {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let mut outputs = Vec::new();
-    for k in 0..2 {
+    for (k, extra) in extra.iter().enumerate() {
         let (csv, json) = (dir.join(format!("{k}.csv")), dir.join(format!("{k}.json")));
         let out = Command::new(env!("CARGO_BIN_EXE_platefall"))
             .args(case)
-            .args(extra[k])
+            .args(*extra)
             .args(["--no-save", "--progress", "off", "--csv"])
             .arg(&csv)
             .arg("--summary")
@@ -73,6 +73,14 @@ fn the_same_free_fall_twice_gives_identical_outputs() {
 fn one_worker_thread_and_two_give_identical_outputs() {
     // The u and v halves of the step and the two halves of the pressure solve run on two workers
     // or one after the other on one; N = 16 so that the pressure factor has real fill.
-    let case = ["free", "--resolution", "16", "--develop", "1", "--t-end", "2"];
+    let case = [
+        "free",
+        "--resolution",
+        "16",
+        "--develop",
+        "1",
+        "--t-end",
+        "2",
+    ];
     run_both(&case, "threads", [&["--threads", "1"], &["--threads", "2"]]);
 }
