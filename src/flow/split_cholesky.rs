@@ -17,14 +17,13 @@
 //! triangular solves are done here. The result does not depend on the number of threads: every
 //! sum is taken in the same order. Both cores stream half the factor each, so the solve takes
 //! about half the time where memory bandwidth allows (README, "Performance").
-use std::ops::Range;
-
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::perm::PermRef;
 use faer::sparse::linalg::amd;
 use faer::sparse::linalg::cholesky::{
-    factorize_symbolic_cholesky, CholeskySymbolicParams, SymbolicCholeskyRaw, SymmetricOrdering,
+    factorize_symbolic_cholesky, CholeskySymbolicParams, SymbolicCholesky, SymbolicCholeskyRaw,
+    SymmetricOrdering,
 };
 use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMat, SparseColMatRef, Triplet};
@@ -49,24 +48,29 @@ impl Part {
     }
 }
 
-/// Columns `start..start + n` of L: their rows lie in the same block or in the separator.
+/// Columns `start..end` of L, whose rows lie in the same block or in the separator, and the
+/// forward solve's updates to the separator.
 struct Block {
     start: usize,
-    /// Entries of column j: `ptr[j]..mid[j]` rows of this block (local index),
-    /// `mid[j]..ptr[j + 1]` rows of the separator (index within the separator).
-    ptr: Vec<u32>,
-    mid: Vec<u32>,
-    row: Vec<u32>,
-    val: Vec<f64>,
-    inv_diag: Vec<f64>,
-    /// The forward solve's updates to the separator's right-hand side.
+    end: usize,
     to_separator: Vec<f64>,
-    /// Size of the separator.
-    ns: usize,
+}
+
+/// L as faer's simplicial factor stores it (column by column, rows ascending, the diagonal
+/// first), with where each column's separator rows begin and the inverse diagonal.
+struct Factor {
+    symbolic: SymbolicCholesky<u32>,
+    values: Vec<f64>,
+    /// Index of each column's first row in the separator (its end if none).
+    mid: Vec<u32>,
+    inv_diag: Vec<f64>,
+    /// First column of the separator.
+    sep_start: usize,
 }
 
 /// The factor of a symmetric positive definite matrix in the two-halves-and-separator order.
 pub struct SplitCholesky {
+    l: Factor,
     left: Block,
     right: Block,
     separator: Block,
@@ -103,23 +107,30 @@ impl SplitCholesky {
         for (new, &old) in order.iter().enumerate() {
             position[old as usize] = new as u32;
         }
-        let l = factor(a, &order, &position)?;
-        let block = |b: usize, end: usize| Block::from_factor(&l, starts[b]..end, starts[2]);
+        let l = Factor::new(a, &order, &position, starts)?;
+        let block = |start: usize, end: usize, to_separator: usize| Block {
+            start,
+            end,
+            to_separator: vec![0.0; to_separator],
+        };
+        let ns = n - starts[2];
         Ok(SplitCholesky {
-            left: block(0, starts[1])?,
-            right: block(1, starts[2])?,
-            separator: block(2, n)?,
-            position,
             nnz: l.values.len(),
+            left: block(0, starts[1], ns),
+            right: block(starts[1], starts[2], ns),
+            separator: block(starts[2], n, 0),
+            l,
+            position,
         })
     }
 
     /// Solves A x = b in place; `x` is in the factor's order (see [`SplitCholesky::position`]).
     pub fn solve_in_place(&mut self, x: &mut [f64]) {
+        let l = self.l.view();
         let (halves, sep) = x.split_at_mut(self.separator.start);
         let (xl, xr) = halves.split_at_mut(self.right.start);
         let (left, right) = (&mut self.left, &mut self.right);
-        rayon::join(|| left.forward(xl), || right.forward(xr));
+        rayon::join(|| left.forward(l, xl), || right.forward(l, xr));
         for ((s, a), b) in sep
             .iter_mut()
             .zip(&left.to_separator)
@@ -127,129 +138,162 @@ impl SplitCholesky {
         {
             *s += a + b;
         }
-        self.separator.forward(sep);
-        self.separator.backward(sep, &[]);
+        self.separator.forward(l, sep);
+        self.separator.backward(l, sep, &[]);
         let sep = &*sep;
-        rayon::join(|| left.backward(xl, sep), || right.backward(xr, sep));
+        rayon::join(|| left.backward(l, xl, sep), || right.backward(l, xr, sep));
     }
 }
 
-impl Block {
-    /// The given columns of L; rows at or beyond `sep_start` belong to the separator.
-    fn from_factor(l: &Csc, columns: Range<usize>, sep_start: usize) -> Result<Block, String> {
-        let (start, end) = (columns.start, columns.end);
-        let (col_ptr, row_idx, values) = (&l.col_ptr, &l.row_idx, &l.values);
-        let n = end - start;
-        // The separator's own block has no rows outside it.
-        let ns = if start == sep_start {
-            0
-        } else {
-            l.col_ptr.len() - 1 - sep_start
-        };
-        let mut b = Block {
-            start,
-            ptr: Vec::with_capacity(n + 1),
+impl Factor {
+    /// Factors `a` with unknown `order[k]` in place k (`position` is the inverse; the blocks
+    /// start at `starts`) and checks that no column of a half has rows in the other half.
+    fn new(
+        a: SparseColMatRef<'_, u32, f64>,
+        order: &[u32],
+        position: &[u32],
+        starts: [usize; 3],
+    ) -> Result<Factor, String> {
+        let (symbolic, values) = factor(a, order, position)?;
+        let n = a.nrows();
+        let mut l = Factor {
+            symbolic,
+            values,
             mid: Vec::with_capacity(n),
-            row: Vec::new(),
-            val: Vec::new(),
             inv_diag: Vec::with_capacity(n),
-            to_separator: vec![0.0; ns],
-            ns,
+            sep_start: starts[2],
         };
-        b.ptr.push(0);
-        let mut outside = Vec::new();
-        for c in start..end {
+        let (col_ptr, row_idx) = l.structure();
+        let mut mid = Vec::with_capacity(n);
+        let mut inv_diag = Vec::with_capacity(n);
+        for c in 0..n {
             let (lo, hi) = (col_ptr[c] as usize, col_ptr[c + 1] as usize);
-            if row_idx[lo] as usize != c || values[lo] <= 0.0 {
+            let rows = &row_idx[lo..hi];
+            if rows[0] as usize != c || l.values[lo] <= 0.0 {
                 return Err(format!(
                     "column {c} of the factor does not start with its diagonal"
                 ));
             }
-            b.inv_diag.push(1.0 / values[lo]);
-            outside.clear();
-            for k in lo + 1..hi {
-                let r = row_idx[k] as usize;
-                if (start..end).contains(&r) {
-                    b.row.push((r - start) as u32);
-                    b.val.push(values[k]);
-                } else if r >= sep_start {
-                    outside.push(((r - sep_start) as u32, values[k]));
-                } else {
-                    return Err(format!(
-                        "the factor couples the two halves (row {r}, column {c})"
-                    ));
-                }
+            if rows.windows(2).any(|w| w[0] >= w[1]) {
+                return Err(format!(
+                    "the rows of column {c} of the factor are not ascending"
+                ));
             }
-            b.mid.push(b.row.len() as u32);
-            for &(r, v) in &outside {
-                b.row.push(r);
-                b.val.push(v);
+            // Rows below the diagonal that lie outside the column's own block.
+            let end = starts.iter().copied().find(|&s| s > c).unwrap_or(n);
+            let own = rows.partition_point(|&r| (r as usize) < end);
+            if own < rows.len() && (rows[own] as usize) < starts[2] {
+                return Err(format!("the factor couples the two halves (column {c})"));
             }
-            b.ptr.push(b.row.len() as u32);
+            mid.push((lo + own) as u32);
+            inv_diag.push(1.0 / l.values[lo]);
         }
-        Ok(b)
+        (l.mid, l.inv_diag) = (mid, inv_diag);
+        Ok(l)
     }
 
-    /// L_b y = x on this block's columns, in place; the updates to the separator go to
-    /// `to_separator`.
-    fn forward(&mut self, x: &mut [f64]) {
-        let n = self.inv_diag.len();
-        assert_eq!(x.len(), n, "a block's forward solve needs its own unknowns");
+    /// Column pointers and row indices.
+    fn structure(&self) -> (&[u32], &[u32]) {
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Simplicial(s) => (s.col_ptr(), s.row_idx()),
+            SymbolicCholeskyRaw::Supernodal(_) => unreachable!("the factor is simplicial"),
+        }
+    }
+
+    /// The factor's arrays, borrowed once for a whole solve.
+    fn view(&self) -> View<'_> {
+        let (col_ptr, row_idx) = self.structure();
+        View {
+            col_ptr,
+            row_idx,
+            values: &self.values,
+            mid: &self.mid,
+            inv_diag: &self.inv_diag,
+            sep_start: self.sep_start,
+        }
+    }
+}
+
+/// The arrays of [`Factor`], borrowed.
+#[derive(Clone, Copy)]
+struct View<'a> {
+    col_ptr: &'a [u32],
+    row_idx: &'a [u32],
+    values: &'a [f64],
+    mid: &'a [u32],
+    inv_diag: &'a [f64],
+    sep_start: usize,
+}
+
+impl View<'_> {
+    /// Column c's entries below the diagonal: (rows, values) in its own block, then in the
+    /// separator.
+    #[inline(always)]
+    fn column(&self, c: usize) -> ((&[u32], &[f64]), (&[u32], &[f64])) {
+        let (lo, m, hi) = (
+            self.col_ptr[c] as usize + 1,
+            self.mid[c] as usize,
+            self.col_ptr[c + 1] as usize,
+        );
+        (
+            (&self.row_idx[lo..m], &self.values[lo..m]),
+            (&self.row_idx[m..hi], &self.values[m..hi]),
+        )
+    }
+}
+
+impl Block {
+    /// L_b y = x on this block's columns, in place (`x` holds this block's unknowns); the updates
+    /// to the separator go to `to_separator`.
+    fn forward(&mut self, l: View, x: &mut [f64]) {
+        assert_eq!(
+            x.len(),
+            self.end - self.start,
+            "a block solves its own unknowns"
+        );
         self.to_separator.fill(0.0);
-        for j in 0..n {
-            let xj = x[j] * self.inv_diag[j];
+        for c in self.start..self.end {
+            let j = c - self.start;
+            let xj = x[j] * l.inv_diag[c];
             x[j] = xj;
-            let (a, m, b) = (
-                self.ptr[j] as usize,
-                self.mid[j] as usize,
-                self.ptr[j + 1] as usize,
-            );
-            scatter(&self.row[a..m], &self.val[a..m], xj, x);
-            scatter(&self.row[m..b], &self.val[m..b], xj, &mut self.to_separator);
+            let ((rows, vals), (sep_rows, sep_vals)) = l.column(c);
+            scatter(rows, vals, xj, x, self.start);
+            scatter(sep_rows, sep_vals, xj, &mut self.to_separator, l.sep_start);
         }
     }
 
     /// L_bᵀ x = y on this block's columns, in place, with the separator's solution `sep` known.
-    fn backward(&self, x: &mut [f64], sep: &[f64]) {
-        let n = self.inv_diag.len();
+    fn backward(&self, l: View, x: &mut [f64], sep: &[f64]) {
         assert_eq!(
             x.len(),
-            n,
-            "a block's backward solve needs its own unknowns"
+            self.end - self.start,
+            "a block solves its own unknowns"
         );
-        assert_eq!(
-            sep.len(),
-            self.ns,
-            "a block's backward solve needs the separator"
-        );
-        for j in (0..n).rev() {
-            let (a, m, b) = (
-                self.ptr[j] as usize,
-                self.mid[j] as usize,
-                self.ptr[j + 1] as usize,
-            );
-            let outside = dot(&self.row[m..b], &self.val[m..b], sep);
-            let own = dot(&self.row[a..m], &self.val[a..m], x);
-            x[j] = (x[j] - own - outside) * self.inv_diag[j];
+        for c in (self.start..self.end).rev() {
+            let ((rows, vals), (sep_rows, sep_vals)) = l.column(c);
+            let outside = dot(sep_rows, sep_vals, sep, l.sep_start);
+            let own = dot(rows, vals, x, self.start);
+            let j = c - self.start;
+            x[j] = (x[j] - own - outside) * l.inv_diag[c];
         }
     }
 }
 
-/// x[r_k] −= v_k s.
+/// x[r_k − base] −= v_k s.
 #[inline(always)]
-fn scatter(rows: &[u32], vals: &[f64], s: f64, x: &mut [f64]) {
+fn scatter(rows: &[u32], vals: &[f64], s: f64, x: &mut [f64], base: usize) {
     for (&r, &v) in rows.iter().zip(vals) {
-        x[r as usize] -= v * s;
+        x[r as usize - base] -= v * s;
     }
 }
 
-/// Σ v_k x[r_k], in four partial sums (one running sum would wait for each addition in turn),
-/// from the last entry to the first: the backward solve then reads the factor in one descending
-/// stream, which the hardware prefetches (ascending within descending columns measured 2× slower
-/// once the factor no longer fits in the cache).
+/// Σ v_k x[r_k − base], in four partial sums (one running sum would wait for each addition in
+/// turn), from the last entry to the first: the backward solve then reads the factor in one
+/// descending stream, which the hardware prefetches (ascending within descending columns measured
+/// 2× slower once the factor no longer fits in the cache).
 #[inline(always)]
-fn dot(rows: &[u32], vals: &[f64], x: &[f64]) -> f64 {
-    let at = |r: u32| x[r as usize];
+fn dot(rows: &[u32], vals: &[f64], x: &[f64], base: usize) -> f64 {
+    let at = |r: u32| x[r as usize - base];
     let (rc, vc) = (rows.rchunks_exact(4), vals.rchunks_exact(4));
     let (rr, vr) = (rc.remainder(), vc.remainder());
     let mut acc = [0.0; 4];
@@ -295,20 +339,13 @@ fn amd_order(a: SparseColMatRef<'_, u32, f64>, members: &[u32]) -> Result<Vec<u3
     Ok(perm)
 }
 
-/// A lower-triangular factor, column by column, the diagonal first in each column.
-struct Csc {
-    col_ptr: Vec<u32>,
-    row_idx: Vec<u32>,
-    values: Vec<f64>,
-}
-
 /// Simplicial LLᵀ of `a` (lower triangle) with unknown `order[k]` in place k (`position` is the
-/// inverse): the factor's column pointers, row indices and values.
+/// inverse): its structure and values.
 fn factor(
     a: SparseColMatRef<'_, u32, f64>,
     order: &[u32],
     position: &[u32],
-) -> Result<Csc, String> {
+) -> Result<(SymbolicCholesky<u32>, Vec<f64>), String> {
     let perm = PermRef::new_checked(order, position, order.len());
     let params = CholeskySymbolicParams {
         supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
@@ -335,14 +372,10 @@ fn factor(
             Default::default(),
         )
         .map_err(|e| format!("numeric Cholesky: {e:?}"))?;
-    let SymbolicCholeskyRaw::Simplicial(s) = symbolic.raw() else {
+    if !matches!(symbolic.raw(), SymbolicCholeskyRaw::Simplicial(_)) {
         return Err("the Cholesky factor is not simplicial".into());
-    };
-    Ok(Csc {
-        col_ptr: s.col_ptr().to_vec(),
-        row_idx: s.row_idx().to_vec(),
-        values,
-    })
+    }
+    Ok((symbolic, values))
 }
 
 #[cfg(test)]
