@@ -214,6 +214,9 @@ impl Factor {
     }
 }
 
+/// Entries of part of a column: row indices and values.
+type Entries<'a> = (&'a [u32], &'a [f64]);
+
 /// The arrays of [`Factor`], borrowed.
 #[derive(Clone, Copy)]
 struct View<'a> {
@@ -229,7 +232,7 @@ impl View<'_> {
     /// Column c's entries below the diagonal: (rows, values) in its own block, then in the
     /// separator.
     #[inline(always)]
-    fn column(&self, c: usize) -> ((&[u32], &[f64]), (&[u32], &[f64])) {
+    fn column(&self, c: usize) -> (Entries<'_>, Entries<'_>) {
         let (lo, m, hi) = (
             self.col_ptr[c] as usize + 1,
             self.mid[c] as usize,
