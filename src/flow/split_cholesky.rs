@@ -159,8 +159,8 @@ impl Factor {
         let mut l = Factor {
             symbolic,
             values,
-            mid: Vec::with_capacity(n),
-            inv_diag: Vec::with_capacity(n),
+            mid: Vec::new(),
+            inv_diag: Vec::new(),
             sep_start: starts[2],
         };
         let (col_ptr, row_idx) = l.structure();
@@ -169,7 +169,7 @@ impl Factor {
         for c in 0..n {
             let (lo, hi) = (col_ptr[c] as usize, col_ptr[c + 1] as usize);
             let rows = &row_idx[lo..hi];
-            if rows[0] as usize != c || l.values[lo] <= 0.0 {
+            if rows.first() != Some(&(c as u32)) || l.values[lo] <= 0.0 {
                 return Err(format!(
                     "column {c} of the factor does not start with its diagonal"
                 ));
