@@ -7,7 +7,7 @@
 //! errors of the fits):
 //! - factor nonzeros per cell ≈ 12.38 ln(min(nx, ny)) − 36.9 (faer's simplicial Cholesky with
 //!   an AMD ordering; least-squares over 15 grids of 4 452 to 3.67 M cells, within ±11 % above
-//!   10⁴ cells);
+//!   10⁴ cells; the split order of `flow/split_cholesky.rs` adds 2–4 %);
 //! - peak resident memory ≈ 8 MB + 180 B per cell + 12 B per factor nonzero (an f64 value and a
 //!   u32 row index), plus 16 MB and 24 B per cell per queued field snapshot with a Rerun sink;
 //! - a step costs ≈ 120 ns per cell (`platefall bench`, README "Performance").
