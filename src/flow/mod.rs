@@ -429,7 +429,7 @@ impl FlowSolver {
 
     /// Number of pressure unknowns and nonzeros of the Cholesky factor.
     pub fn pressure_size(&self) -> (usize, usize) {
-        (self.pressure.unknowns(), self.pressure.factor_nnz)
+        (self.pressure.unknowns(), self.pressure.factor_nnz())
     }
 
     /// Interior u on vertical faces ((nx+1) × ny) and v on horizontal faces (nx × (ny+1)).

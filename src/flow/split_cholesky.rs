@@ -76,8 +76,6 @@ pub struct SplitCholesky {
     separator: Block,
     /// Position of each unknown (in the caller's numbering) in the factor's order.
     pub position: Vec<u32>,
-    /// Nonzeros of L.
-    pub nnz: usize,
 }
 
 impl SplitCholesky {
@@ -115,13 +113,17 @@ impl SplitCholesky {
         };
         let ns = n - starts[2];
         Ok(SplitCholesky {
-            nnz: l.values.len(),
             left: block(0, starts[1], ns),
             right: block(starts[1], starts[2], ns),
             separator: block(starts[2], n, 0),
             l,
             position,
         })
+    }
+
+    /// Nonzeros of L.
+    pub fn nnz(&self) -> usize {
+        self.l.values.len()
     }
 
     /// Solves A x = b in place; `x` is in the factor's order (see [`SplitCholesky::position`]).
@@ -155,21 +157,14 @@ impl Factor {
         starts: [usize; 3],
     ) -> Result<Factor, String> {
         let (symbolic, values) = factor(a, order, position)?;
+        let (col_ptr, row_idx) = structure(&symbolic);
         let n = a.nrows();
-        let mut l = Factor {
-            symbolic,
-            values,
-            mid: Vec::new(),
-            inv_diag: Vec::new(),
-            sep_start: starts[2],
-        };
-        let (col_ptr, row_idx) = l.structure();
         let mut mid = Vec::with_capacity(n);
         let mut inv_diag = Vec::with_capacity(n);
         for c in 0..n {
             let (lo, hi) = (col_ptr[c] as usize, col_ptr[c + 1] as usize);
             let rows = &row_idx[lo..hi];
-            if rows.first() != Some(&(c as u32)) || l.values[lo] <= 0.0 {
+            if rows.first() != Some(&(c as u32)) || values[lo] <= 0.0 {
                 return Err(format!(
                     "column {c} of the factor does not start with its diagonal"
                 ));
@@ -186,23 +181,20 @@ impl Factor {
                 return Err(format!("the factor couples the two halves (column {c})"));
             }
             mid.push((lo + own) as u32);
-            inv_diag.push(1.0 / l.values[lo]);
+            inv_diag.push(1.0 / values[lo]);
         }
-        (l.mid, l.inv_diag) = (mid, inv_diag);
-        Ok(l)
-    }
-
-    /// Column pointers and row indices.
-    fn structure(&self) -> (&[u32], &[u32]) {
-        match self.symbolic.raw() {
-            SymbolicCholeskyRaw::Simplicial(s) => (s.col_ptr(), s.row_idx()),
-            SymbolicCholeskyRaw::Supernodal(_) => unreachable!("the factor is simplicial"),
-        }
+        Ok(Factor {
+            symbolic,
+            values,
+            mid,
+            inv_diag,
+            sep_start: starts[2],
+        })
     }
 
     /// The factor's arrays, borrowed once for a whole solve.
     fn view(&self) -> View<'_> {
-        let (col_ptr, row_idx) = self.structure();
+        let (col_ptr, row_idx) = structure(&self.symbolic);
         View {
             col_ptr,
             row_idx,
@@ -340,6 +332,14 @@ fn amd_order(a: SparseColMatRef<'_, u32, f64>, members: &[u32]) -> Result<Vec<u3
     )
     .map_err(|e| format!("AMD ordering: {e:?}"))?;
     Ok(perm)
+}
+
+/// Column pointers and row indices of a simplicial factor (as [`factor`] returns).
+fn structure(symbolic: &SymbolicCholesky<u32>) -> (&[u32], &[u32]) {
+    match symbolic.raw() {
+        SymbolicCholeskyRaw::Simplicial(s) => (s.col_ptr(), s.row_idx()),
+        SymbolicCholeskyRaw::Supernodal(_) => unreachable!("`factor` refuses a supernodal factor"),
+    }
 }
 
 /// Simplicial LLᵀ of `a` (lower triangle) with unknown `order[k]` in place k (`position` is the
