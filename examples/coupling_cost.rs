@@ -7,10 +7,10 @@
 use std::time::Instant;
 
 use clap::Parser;
-use platefall::body::{Dof, StrongCoupling};
 use platefall::cli::{run_config, Cli};
-use platefall::flow::AddedMass;
-use platefall::sim::Simulation;
+use platefall_core::body::{Dof, StrongCoupling};
+use platefall_core::flow::AddedMass;
+use platefall_core::sim::Simulation;
 
 const WARMUP: usize = 20;
 const BLOCK: usize = 100;

@@ -1,6 +1,6 @@
 //! A static plate at α = 0.4 run from Rust: describe the run, step it to the end, print C_D.
-use platefall::grid::GridSpec;
-use platefall::sim::{Case, RunConfig, Simulation};
+use platefall_core::grid::GridSpec;
+use platefall_core::sim::{Case, RunConfig, Simulation};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let case = Case::Static {

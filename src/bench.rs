@@ -16,9 +16,9 @@ use clap::Parser;
 use serde::Serialize;
 
 use crate::cli::{run_config, threads, Cli};
-use crate::flow::{FarFieldScheme, FlowParams, FlowSolver, OuterBc};
-use crate::grid::{Grid, GridSpec};
-use crate::sim::{Case, Simulation};
+use platefall_core::flow::{FarFieldScheme, FlowParams, FlowSolver, OuterBc};
+use platefall_core::grid::{Grid, GridSpec};
+use platefall_core::sim::{Case, Simulation};
 
 #[derive(Clone, Debug, Serialize)]
 pub struct BenchRow {
@@ -186,7 +186,7 @@ fn card_config(
     resolution: usize,
     turns: usize,
     scheme: FarFieldScheme,
-) -> anyhow::Result<crate::sim::RunConfig> {
+) -> anyhow::Result<platefall_core::sim::RunConfig> {
     let far = match scheme {
         FarFieldScheme::Explicit => "explicit",
         FarFieldScheme::Implicit => "implicit",

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use clap::Parser;
 
 use platefall::cli::{bench::run_bench, run::run_case, Cli, Command};
-use platefall::record::output::OutputError;
+use platefall_record::output::OutputError;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();

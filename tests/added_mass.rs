@@ -5,9 +5,9 @@
 mod common;
 use std::f64::consts::PI;
 
-fn first_step(args: &[&str]) -> platefall::sim::StepSample {
+fn first_step(args: &[&str]) -> platefall_core::sim::StepSample {
     let cfg = common::config(args);
-    let mut sim = platefall::sim::Simulation::new(cfg).unwrap();
+    let mut sim = platefall_core::sim::Simulation::new(cfg).unwrap();
     sim.step().unwrap()
 }
 

@@ -2,11 +2,11 @@
 
 use std::f64::consts::PI;
 
-use platefall::body::{
+use platefall_core::body::{
     ab_weights, coupling_advice, wrap_angle, AbStart, AdamsBashforth, BodyState, Dof,
     InertialLoads, PlateProps, RigidBody, MAX_ORDER,
 };
-use platefall::config::PhysicalPlate;
+use platefall_core::config::PhysicalPlate;
 
 /// SPEC §6 table, newest first, as (numerators, denominator).
 const SPEC_TABLE: [(&[f64], f64); 6] = [

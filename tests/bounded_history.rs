@@ -3,8 +3,8 @@
 //! window, which may start a few steps later; extremes exact), and the step count is the run's.
 mod common;
 
-use platefall::post::summary::summarize;
-use platefall::sim::{History, Quantity, RunRecord};
+use platefall_core::sim::{History, Quantity, RunRecord};
+use platefall_post::summary::summarize;
 
 #[test]
 fn the_summary_from_a_thinned_history_agrees_with_the_full_one() {

@@ -1,8 +1,8 @@
 //! Cases B–D (SPEC §1, §6, §8) at the seed's resolution N = 16: short CI runs.
 mod common;
-use platefall::post::analysis::{dominant_frequency, TimeWindow};
-use platefall::sim::RunRecord;
-use platefall::sim::RunStatus;
+use platefall_core::sim::RunRecord;
+use platefall_core::sim::RunStatus;
+use platefall_post::analysis::{dominant_frequency, TimeWindow};
 use std::f64::consts::PI;
 
 /// Net angle θ turned between the release (held attitude until then) and the end of the run.

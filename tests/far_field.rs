@@ -3,8 +3,8 @@
 //! no longer depends on the extent of the grid.
 use std::f64::consts::PI;
 
-use platefall::flow::{FlowParams, FlowSolver, Frame, OuterBc};
-use platefall::grid::{Grid, GridSpec, Stretch};
+use platefall_core::flow::{FlowParams, FlowSolver, Frame, OuterBc};
+use platefall_core::grid::{Grid, GridSpec, Stretch};
 
 /// A Lamb–Oseen vortex at rest in the inertial frame: circulation Γ, core σ² = r_c² + 4νt,
 /// vorticity Γ/(πσ²) exp(−r²/σ²), azimuthal velocity Γ/(2πr)(1 − exp(−r²/σ²)). Seen from a grid
@@ -154,8 +154,8 @@ fn a_lamb_oseen_vortex_crosses_the_far_field_of_a_spinning_grid() {
 }
 
 mod common;
-use platefall::post::analysis::{mean_over, TimeWindow};
-use platefall::sim::{RunRecord, RunStatus, StepSample};
+use platefall_core::sim::{RunRecord, RunStatus, StepSample};
+use platefall_post::analysis::{mean_over, TimeWindow};
 
 /// The card's free fall with today's explicit far field, turns 1–5 after release (the summary's
 /// developed part: whole turns 2..=5), measured once with `platefall free --resolution N

@@ -3,8 +3,8 @@
 //! time), rigid rotation with a spinning plate (the θ̇ terms), and discrete incompressibility —
 //! each with today's explicit scheme and with the implicit far field, the latter at a rotation
 //! rate where the grid speed far out exceeds the explicit scheme's limit more than tenfold.
-use platefall::flow::{FarFieldScheme, FlowParams, FlowSolver, Frame, OuterBc};
-use platefall::grid::{Grid, GridSpec, Stretch};
+use platefall_core::flow::{FarFieldScheme, FlowParams, FlowSolver, Frame, OuterBc};
+use platefall_core::grid::{Grid, GridSpec, Stretch};
 
 /// The frame of today's manufactured solution: the centre moves along the body axes at (a, b) and
 /// the body spins at θ̇ (all nonzero, so every grid-velocity and rotation term is exercised).

@@ -1,5 +1,5 @@
 //! Grid (SPEC §4): the seed's stretching figures, monotone spacing, growth within the cap.
-use platefall::grid::{stretch_coefficient, Grid, GridSpec, Stretch};
+use platefall_core::grid::{stretch_coefficient, Grid, GridSpec, Stretch};
 
 #[test]
 fn seed_x_stretching_matches_the_dissertation() {

@@ -5,9 +5,9 @@ mod common;
 use std::sync::OnceLock;
 use std::thread;
 
-use platefall::post::analysis::{mean_over, TimeWindow};
-use platefall::post::summary::Summary;
-use platefall::sim::{RunRecord, RunStatus, StepSample};
+use platefall_core::sim::{RunRecord, RunStatus, StepSample};
+use platefall_post::analysis::{mean_over, TimeWindow};
+use platefall_post::summary::Summary;
 
 /// Strips 10 mm × 0.3125 mm (t/c = 1/32) in water whose densities give m* = 0.01 … 0.3
 /// (I* = m*(1 + 1/32²)/12: 0.00083 … 0.025); the two lightest rise.

@@ -3,8 +3,8 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use platefall::flow::{FarFieldScheme, FlowParams, FlowSolver, Frame, OuterBc};
-use platefall::grid::{Grid, GridSpec};
+use platefall_core::flow::{FarFieldScheme, FlowParams, FlowSolver, Frame, OuterBc};
+use platefall_core::grid::{Grid, GridSpec};
 
 struct Counting;
 static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);

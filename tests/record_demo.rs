@@ -10,9 +10,9 @@ mod record_common;
 
 use std::time::Instant;
 
-use platefall::record::messages::RunOutcome;
-use platefall::record::{spawn_logger, RecordOptions};
-use platefall::sim::RunStatus;
+use platefall_core::sim::RunStatus;
+use platefall_record::messages::RunOutcome;
+use platefall_record::{spawn_logger, RecordOptions};
 use record_common::*;
 
 fn env_f64(name: &str, default: f64) -> f64 {
@@ -91,7 +91,7 @@ fn demo_recording() {
 
 /// Every view side by side (the default layout hides some in tabs), for screenshots.
 fn all_views_blueprint() -> rerun::blueprint::Blueprint {
-    use platefall::record::paths;
+    use platefall_record::paths;
     use rerun::blueprint::{Blueprint, Grid, Spatial2DView, TimeSeriesView};
     let flow = |name: &str, field: &str| {
         Spatial2DView::new(name)
@@ -157,7 +157,7 @@ fn inspect_all_views() {
             enc.append(&msg).unwrap();
         }
     }
-    let (rec, storage) = rerun::RecordingStreamBuilder::new(platefall::record::APPLICATION_ID)
+    let (rec, storage) = rerun::RecordingStreamBuilder::new(platefall_record::APPLICATION_ID)
         .blueprint()
         .send_properties(false)
         .memory()

@@ -4,9 +4,9 @@ mod record_common;
 
 use std::time::{Duration, Instant};
 
-use platefall::record::messages::RunOutcome;
-use platefall::record::{paths, spawn_logger, RecordOptions, CSV_HEADER};
-use platefall::sim::RunStatus;
+use platefall_core::sim::RunStatus;
+use platefall_record::messages::RunOutcome;
+use platefall_record::{paths, spawn_logger, RecordOptions, CSV_HEADER};
 use record_common::*;
 
 fn outcome(status: RunStatus) -> RunOutcome {
@@ -20,8 +20,8 @@ fn outcome(status: RunStatus) -> RunOutcome {
 /// Runs `steps` synthetic steps through a logger with `opts`, offering a field whenever due.
 /// Returns (fields accepted, fields due).
 fn drive(
-    logger: &mut platefall::record::Logger,
-    g: &platefall::grid::GridGeometry,
+    logger: &mut platefall_record::Logger,
+    g: &platefall_core::grid::GridGeometry,
     steps: u64,
     dt: f64,
 ) -> (u64, u64) {
@@ -449,7 +449,7 @@ fn serve_keeps_the_run_for_a_late_viewer() {
     let port = free_port();
     let g = grid(30, 24, 0.0625);
     let opts = RecordOptions {
-        serve: Some(platefall::record::ServeOptions {
+        serve: Some(platefall_record::ServeOptions {
             bind: "127.0.0.1".parse().unwrap(),
             port,
             memory_limit: "10%".into(),

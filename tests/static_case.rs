@@ -1,6 +1,6 @@
 //! Case A, the static plate (SPEC §1, §5, §8) at the seed's resolution N = 16, Re = 5000.
 mod common;
-use platefall::sim::RunStatus;
+use platefall_core::sim::RunStatus;
 
 #[test]
 fn normal_plate_sheds_an_asymmetric_wake() {

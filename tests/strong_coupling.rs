@@ -8,7 +8,7 @@
 mod common;
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use platefall::sim::{RunStatus, Simulation, StepSample};
+use platefall_core::sim::{RunStatus, Simulation, StepSample};
 
 /// The first five steps of 0.002 at N = 64.
 const FIRST_STEPS: [&str; 6] = ["--resolution", "64", "--dt-max", "0.002", "--t-end", "0.01"];

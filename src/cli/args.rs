@@ -7,10 +7,10 @@ use super::flags::ArgError;
 use super::plate_args::{CouplingArg, PhysicalArgs};
 use super::record_args::RecordArgs;
 use super::Command;
-use crate::flow::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
-use crate::grid::{GridSpec, Stretch};
-use crate::param::{check_whole, Param};
-use crate::sim::{BodyConfig, Case, RunConfig, TimeControl};
+use platefall_core::flow::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
+use platefall_core::grid::{GridSpec, Stretch};
+use platefall_core::param::{check_whole, Param};
+use platefall_core::sim::{BodyConfig, Case, RunConfig, TimeControl};
 
 /// Options shared by every case.
 #[derive(Args, Debug, Clone)]

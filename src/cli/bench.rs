@@ -6,8 +6,8 @@ use clap::Args;
 
 use super::args::FarFieldArg;
 use crate::bench::{bench_card, bench_one, card_table, table};
-use crate::record::files::check_writable;
-use crate::record::output::write_atomically;
+use platefall_record::files::check_writable;
+use platefall_record::output::write_atomically;
 
 #[derive(Args, Debug)]
 pub struct BenchArgs {

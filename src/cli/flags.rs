@@ -1,5 +1,5 @@
 //! The library names a bad input by its quantity ([`Param`]); the command line names its flag.
-use crate::param::{InputError, Param};
+use platefall_core::param::{InputError, Param};
 
 /// The flag that sets `p`.
 pub fn flag(p: Param) -> &'static str {

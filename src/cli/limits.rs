@@ -1,12 +1,12 @@
 //! Resource limits, checked before anything large is allocated: the run's estimated memory
-//! (cells and pressure factor, [`crate::sim::estimate`]) against `--max-memory`, and the number
+//! (cells and pressure factor, [`platefall_core::sim::estimate`]) against `--max-memory`, and the number
 //! of steps its time-step limits imply against `--max-steps`. A refusal is one line with the
 //! estimate, the limit, and the options that reduce it.
 use clap::Args;
 
-use crate::grid::Stretch;
-use crate::sim::estimate::{estimate, DtFloor, Estimate, FACTOR_NONZERO_LIMIT};
-use crate::sim::RunConfig;
+use platefall_core::grid::Stretch;
+use platefall_core::sim::estimate::{estimate, DtFloor, Estimate, FACTOR_NONZERO_LIMIT};
+use platefall_core::sim::RunConfig;
 
 /// Default share of physical memory a run may take.
 const DEFAULT_MEMORY_SHARE: &str = "75%";

@@ -6,10 +6,10 @@ use clap::{Args, ValueEnum};
 
 use super::args::{AbStartArg, BodyArgs, Preset};
 use super::flags::ArgError;
-use crate::body::{AbStart, Coupling, PlateProps};
-use crate::config::{Fluid, PhysicalPlate, Strip};
-use crate::grid::Grid;
-use crate::sim::{BodyConfig, RunConfig};
+use platefall_core::body::{AbStart, Coupling, PlateProps};
+use platefall_core::config::{Fluid, PhysicalPlate, Strip};
+use platefall_core::grid::Grid;
+use platefall_core::sim::{BodyConfig, RunConfig};
 
 /// The three inputs that describe a plate physically; each of the physical options needs them all.
 const PLATE: [&str; 3] = ["chord_mm", "thickness_mm", "plate_density"];
@@ -165,7 +165,7 @@ impl BodyArgs {
     fn body_config(
         &self,
         preset: Option<String>,
-        scales: Option<crate::sim::ReferenceScales>,
+        scales: Option<platefall_core::sim::ReferenceScales>,
         props: PlateProps,
     ) -> BodyConfig {
         BodyConfig {
@@ -206,7 +206,7 @@ impl BodyArgs {
             .as_ref()
             .filter(|b| b.coupling == Coupling::Explicit)
         {
-            if let Some(advice) = crate::body::coupling_advice(&b.props) {
+            if let Some(advice) = platefall_core::body::coupling_advice(&b.props) {
                 lines.push(format!(
                     "warning: {advice}; the default --coupling strong is not"
                 ));

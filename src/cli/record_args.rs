@@ -4,14 +4,14 @@
 use std::net::{IpAddr, SocketAddr, TcpListener};
 use std::path::{Path, PathBuf};
 
-use crate::post::{FieldWindow, StreamFrame};
-use crate::record::files::{check_outputs, OutputPath};
-use crate::record::options::{
+use platefall_post::{FieldWindow, StreamFrame};
+use platefall_record::files::{check_outputs, OutputPath};
+use platefall_record::options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
     DEFAULT_PORT, FIELD_RES_RANGE,
 };
-use crate::record::view_options::{ViewOptions, DEFAULT_WAKE_RES};
-use crate::record::viewer;
+use platefall_record::view_options::{ViewOptions, DEFAULT_WAKE_RES};
+use platefall_record::viewer;
 
 /// How progress is shown on stderr.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]

@@ -13,14 +13,14 @@ use super::args::run_config;
 use super::limits::check_limits;
 use super::signals::{Interrupts, Phase};
 use super::Command;
-use crate::post::report::report;
-use crate::post::summary::{summarize, Summary};
-use crate::record::messages::{RunInfo, RunOutcome};
-use crate::record::output::write_atomically;
-use crate::record::{self, Logger, LoggerReport, RecordOptions};
-use crate::sim::{
+use platefall_core::sim::{
     FieldSnapshot, Observer, RunConfig, RunRecord, RunStatus, Simulation, StepSample,
 };
+use platefall_post::report::report;
+use platefall_post::summary::{summarize, Summary};
+use platefall_record::messages::{RunInfo, RunOutcome};
+use platefall_record::output::write_atomically;
+use platefall_record::{Logger, LoggerReport, RecordOptions};
 
 /// A case, validated and ready to run.
 struct Prepared {
@@ -31,13 +31,13 @@ struct Prepared {
 }
 
 /// Runs a case subcommand to its end; the exit code says how it ended. An `Err` means nothing
-/// was run (bad input; or, for an [`OutputError`](crate::record::output::OutputError), an
+/// was run (bad input; or, for an [`OutputError`](platefall_record::output::OutputError), an
 /// output that could not even be created).
 pub fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
     let p = prepare(cmd)?;
     let interrupts = Interrupts::install()?;
     let mut sim = Simulation::new(p.config.clone())?;
-    let mut logger = record::spawn_logger(p.opts.clone(), run_info(&p.config, &sim))?;
+    let mut logger = platefall_record::spawn_logger(p.opts.clone(), run_info(&p.config, &sim))?;
     let pool = super::threads::pool(p.threads)?;
 
     let (mut rec, wall_seconds, lost) = solve(&mut sim, &mut logger, interrupts.stop(), &pool);
@@ -91,7 +91,7 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
         config.time.t_end
     };
     let mut opts = record_args.resolve(config.case.name(), progress_end, &others)?;
-    opts.view.plot_ranges = Some(crate::post::PlotRanges::for_config(&config));
+    opts.view.plot_ranges = Some(platefall_post::PlotRanges::for_config(&config));
     for line in super::args::plate_notes(cmd, &config) {
         eprintln!("{line}");
     }

@@ -5,8 +5,8 @@
 use clap::{CommandFactory, Parser};
 
 use crate::cli::{run_config, Cli};
-use crate::post::summary::summarize;
-use crate::sim::RunRecord;
+use platefall_core::sim::RunRecord;
+use platefall_post::summary::summarize;
 
 /// The case subcommands a plan may name.
 pub const CASES: [&str; 4] = ["static", "forced", "pinned", "free"];
@@ -63,7 +63,7 @@ pub fn validate_case(argv: &[String]) -> Result<(), String> {
 }
 
 /// The validated run configuration of an argument vector.
-fn config_of(argv: &[String]) -> Result<crate::sim::RunConfig, String> {
+fn config_of(argv: &[String]) -> Result<platefall_core::sim::RunConfig, String> {
     let full = std::iter::once("platefall".to_string()).chain(argv.iter().cloned());
     let cli = Cli::try_parse_from(full).map_err(|e| clap_one_line(&e))?;
     run_config(&cli.command).map_err(|e| e.to_string())
@@ -73,7 +73,7 @@ fn config_of(argv: &[String]) -> Result<crate::sim::RunConfig, String> {
 pub fn summary_keys(argv: &[String]) -> Result<Vec<String>, String> {
     let config = config_of(argv)?;
     let empty = RunRecord {
-        status: crate::sim::RunStatus::Completed,
+        status: platefall_core::sim::RunStatus::Completed,
         samples: Default::default(),
         t_release: 0.0,
         cells: 0,

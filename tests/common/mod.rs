@@ -2,11 +2,11 @@
 #![allow(dead_code)]
 use clap::Parser;
 use platefall::cli::{run_config, Cli};
-use platefall::post::report::report;
-use platefall::post::summary::{summarize, Summary};
-use platefall::sim::RunConfig;
-use platefall::sim::{FieldSnapshot, StepSample};
-use platefall::sim::{Observer, RunRecord, Simulation};
+use platefall_core::sim::RunConfig;
+use platefall_core::sim::{FieldSnapshot, StepSample};
+use platefall_core::sim::{Observer, RunRecord, Simulation};
+use platefall_post::report::report;
+use platefall_post::summary::{summarize, Summary};
 
 /// Discards everything; never stops early.
 pub struct Quiet;

@@ -6,10 +6,10 @@ use std::io::BufReader;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use platefall::flow::Frame;
-use platefall::grid::GridGeometry;
-use platefall::record::messages::RunInfo;
-use platefall::sim::{FieldSnapshot, StepSample};
+use platefall_core::flow::Frame;
+use platefall_core::grid::GridGeometry;
+use platefall_core::sim::{FieldSnapshot, StepSample};
+use platefall_record::messages::RunInfo;
 use rerun::external::re_log_encoding::DecoderApp;
 use rerun::log::{Chunk, LogMsg};
 

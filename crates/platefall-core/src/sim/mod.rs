@@ -1,0 +1,319 @@
+//! The coupled time loop (SPEC §6 "Coupling"): each step the flow gives the loads for the current
+//! motion, the rigid-body step gives the next motion, and that motion sets the flow's boundary for
+//! the next flow step. With strong coupling (the default) the body step takes the loads without
+//! the flow's instantaneous answer to the last change of motion and solves its equations with the
+//! added mass implicit ([`StrongCoupling`]); with explicit coupling it takes the loads as they are.
+//! Prescribed cases (and the development phase before a release) take the motion from their
+//! formula instead ([`Case::prescribed_state`]).
+//!
+//! The physics core: no I/O and no clock. Results go to an [`Observer`], step by step.
+//!
+//! ```
+//! use platefall_core::grid::GridSpec;
+//! use platefall_core::sim::{Case, RunConfig, Simulation};
+//! let mut config = RunConfig::new(Case::Static { alpha: 0.4, kick: 0.0 }, GridSpec::modern(8));
+//! config.time.t_end = 0.05;
+//! let mut sim = Simulation::new(config)?;
+//! while !sim.finished() {
+//!     let sample = sim.step()?;
+//!     println!("t = {:.3}  C_D = {:.3}", sample.t, sample.cd);
+//! }
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+pub mod checks;
+pub mod estimate;
+pub mod history;
+pub mod motion;
+pub mod output;
+pub mod spec;
+pub mod timestep;
+
+pub use history::{History, Quantity};
+pub use motion::Case;
+pub use output::{FieldSnapshot, RunRecord, RunStatus, StepSample};
+pub use spec::{BodyConfig, ReferenceScales, RunConfig, TimeControl};
+
+use crate::body::{
+    wrap_angle, AbError, BodyState, Coupling, Dof, InertialLoads, RigidBody, StrongCoupling,
+};
+use crate::flow::{AddedMass, FlowError, FlowSolver, OuterBc};
+use crate::grid::Grid;
+use crate::param::{InputError, Param};
+
+/// Receives the run as it happens.
+pub trait Observer {
+    /// Every step, in order.
+    fn step(&mut self, sample: &StepSample);
+    /// Whether a field snapshot is wanted at time t (called after every step).
+    fn wants_field(&mut self, t: f64) -> bool;
+    /// A field snapshot (only after `wants_field` returned true).
+    fn field(&mut self, snapshot: FieldSnapshot);
+    /// Polled every step: stop cleanly when true (Ctrl-C).
+    fn should_stop(&self) -> bool;
+}
+
+/// Why a run could not be built or could not go on.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SimError {
+    #[error(transparent)]
+    Input(#[from] InputError),
+    #[error(transparent)]
+    Flow(#[from] FlowError),
+    #[error(transparent)]
+    Body(#[from] AbError),
+    /// The plate's motion became non-finite.
+    #[error("the plate's motion is not finite at t = {t:.4}")]
+    MotionNotFinite { t: f64 },
+    /// The stable time step fell to round-off of t (the motion runs away, e.g. explicit coupling
+    /// of a light plate).
+    #[error(
+        "the time step fell to {dt:.3e} at t = {t:.4}: the motion runs away (as explicit \
+         coupling of a plate lighter than its added mass does)"
+    )]
+    StepCollapsed { t: f64, dt: f64 },
+}
+
+/// The plate's motion law at run time.
+enum Motion {
+    /// A formula of time (cases A, B).
+    Prescribed,
+    /// Held on a formula until the release, then integrated (cases C, D).
+    Coupled {
+        body: Box<RigidBody>,
+        dof: Dof,
+        released: bool,
+        /// The added-mass-implicit body equations (strong coupling); `None` for explicit coupling.
+        strong: Option<Box<StrongCoupling>>,
+    },
+}
+
+/// A run: the flow, the plate and its motion law.
+pub struct Simulation {
+    pub config: RunConfig,
+    pub flow: FlowSolver,
+    pub state: BodyState,
+    motion: Motion,
+    /// θ at the release (coupled cases), for counting turns.
+    theta_release: Option<f64>,
+}
+
+impl Simulation {
+    /// Validates the description, then builds the grid, the flow solver (fluid at rest) and the
+    /// motion law.
+    pub fn new(config: RunConfig) -> Result<Self, SimError> {
+        config.validate()?;
+        let grid = Grid::new(&config.grid)?;
+        let state = config.case.prescribed_state(0.0);
+        let mut flow =
+            FlowSolver::new(grid, config.flow.clone(), OuterBc::FarField, state.frame())?;
+        let motion = match &config.case {
+            Case::Static { .. } | Case::Forced { .. } => Motion::Prescribed,
+            Case::Pinned { .. } | Case::Free { .. } => {
+                let b = config.body.as_ref().ok_or(InputError::MissingPlate)?;
+                let dof = if matches!(config.case, Case::Pinned { .. }) {
+                    Dof::PitchOnly
+                } else {
+                    Dof::Free
+                };
+                let body = RigidBody::new(b.props, Dof::Prescribed, state, b.ab_order, b.ab_start)?;
+                let strong = match b.coupling {
+                    Coupling::Explicit => None,
+                    Coupling::Strong => Some(Box::new(strong_coupling(b, &mut flow)?)),
+                };
+                Motion::Coupled {
+                    body: Box::new(body),
+                    dof,
+                    released: false,
+                    strong,
+                }
+            }
+        };
+        Ok(Simulation {
+            config,
+            flow,
+            state,
+            motion,
+            theta_release: None,
+        })
+    }
+
+    /// The flow's added-mass matrix K when the run uses strong coupling.
+    pub fn added_mass(&self) -> Option<AddedMass> {
+        match &self.motion {
+            Motion::Coupled {
+                strong: Some(s), ..
+            } => Some(s.added),
+            _ => None,
+        }
+    }
+
+    /// The release time (coupled), end of spin-up (forced) or 0.
+    pub fn release_time(&self) -> f64 {
+        self.config.case.release_time()
+    }
+
+    /// The sample describing the current state.
+    pub fn sample(&self) -> StepSample {
+        let (cl, cd, cm) = self.flow.coefficients();
+        let s = &self.state;
+        let gamma = s.flight_path_angle();
+        StepSample {
+            step: self.flow.steps,
+            t: self.flow.t,
+            dt: self.flow.dt_prev,
+            cl,
+            cd,
+            cm,
+            x: s.x,
+            y: s.y,
+            theta: s.theta,
+            xdot: s.xdot,
+            ydot: s.ydot,
+            omega: s.omega,
+            speed: s.speed(),
+            gamma,
+            alpha: wrap_angle(s.theta - gamma),
+        }
+    }
+
+    /// A snapshot of the flow fields.
+    pub fn snapshot(&self) -> FieldSnapshot {
+        let (u, v) = self.flow.velocity_arrays();
+        FieldSnapshot {
+            step: self.flow.steps,
+            t: self.flow.t,
+            x: self.state.x,
+            y: self.state.y,
+            theta: self.state.theta,
+            frame: self.flow.frame,
+            u,
+            v,
+            p: self.flow.p.clone(),
+        }
+    }
+
+    /// One coupled step. Returns the new sample.
+    pub fn step(&mut self) -> Result<StepSample, SimError> {
+        let limit = self.flow.prepare()?;
+        let t = self.flow.t;
+        let dt = timestep::choose_dt(
+            t,
+            limit,
+            self.state.omega,
+            self.flow.dt_prev,
+            self.release_time(),
+            &self.config.time,
+        );
+        if dt <= 64.0 * f64::EPSILON * t.abs().max(1.0) {
+            return Err(SimError::StepCollapsed { t, dt });
+        }
+        let next = self.next_state(t, dt);
+        if !(next.x.is_finite()
+            && next.y.is_finite()
+            && next.theta.is_finite()
+            && next.omega.is_finite())
+        {
+            return Err(SimError::MotionNotFinite { t: t + dt });
+        }
+        self.flow.advance(dt, next.frame())?;
+        self.state = next;
+        let s = self.sample();
+        if self.theta_release.is_none()
+            && self.config.case.is_coupled()
+            && s.t >= self.release_time() - 1e-9
+        {
+            self.theta_release = Some(s.theta);
+        }
+        Ok(s)
+    }
+
+    /// The plate's state at t + dt: from the formula, or (after the release) from the body
+    /// equations under the loads of the current flow.
+    fn next_state(&mut self, t: f64, dt: f64) -> BodyState {
+        let Motion::Coupled {
+            body,
+            dof,
+            released,
+            strong,
+        } = &mut self.motion
+        else {
+            return self.config.case.prescribed_state(t + dt);
+        };
+        if !*released && t >= self.config.case.release_time() - 1e-9 {
+            *released = true;
+            body.state = self.state;
+            body.set_dof(*dof);
+        }
+        if !*released {
+            return self.config.case.prescribed_state(t + dt);
+        }
+        let (flow, l) = (&self.flow, self.flow.loads());
+        match strong {
+            Some(sc) => {
+                let rest = sc
+                    .added
+                    .rest(&l, &flow.frame, &flow.frame_prev, flow.dt_prev);
+                let f = sc.derivative(&body.props, *dof, &body.state, rest, dt);
+                body.step_with(t, f, dt);
+            }
+            None => {
+                let loads = InertialLoads::from_body_axes(self.state.theta, l.fx, l.fy, l.moment);
+                body.step(t, &loads, dt);
+            }
+        }
+        body.state
+    }
+
+    /// Whether the run is over (t_end reached, or the requested turns after release).
+    pub fn finished(&self) -> bool {
+        if self.flow.t >= self.config.time.t_end - 1e-9 {
+            return true;
+        }
+        match (self.config.time.turns, self.theta_release) {
+            (Some(n), Some(th)) => (self.state.theta - th).abs() >= 2.0 * std::f64::consts::PI * n,
+            _ => false,
+        }
+    }
+
+    /// Runs to the end, reporting every step to `obs`.
+    pub fn run(&mut self, obs: &mut dyn Observer) -> RunRecord {
+        let mut samples = History::default();
+        let status = loop {
+            if obs.should_stop() {
+                break RunStatus::Interrupted;
+            }
+            match self.step() {
+                Ok(s) => {
+                    obs.step(&s);
+                    samples.push(s);
+                    if obs.wants_field(s.t) {
+                        obs.field(self.snapshot());
+                    }
+                    if self.finished() {
+                        break RunStatus::Completed;
+                    }
+                }
+                Err(e) => break RunStatus::Diverged(e.to_string()),
+            }
+        };
+        RunRecord {
+            status,
+            samples,
+            t_release: self.release_time(),
+            cells: self.flow.grid.cells(),
+        }
+    }
+}
+
+/// The strong coupling of a plate: the flow's added-mass matrix (three projections) and the body's
+/// equations with it on the left-hand side.
+fn strong_coupling(b: &BodyConfig, flow: &mut FlowSolver) -> Result<StrongCoupling, SimError> {
+    let added = flow.added_mass();
+    StrongCoupling::new(&b.props, added).ok_or_else(|| {
+        SimError::Input(InputError::Inconsistent {
+            param: Param::Mass,
+            value: b.props.mass,
+            why: "the plate's mass plus the flow's added mass is singular".into(),
+        })
+    })
+}

@@ -1,0 +1,45 @@
+//! Post-processing (SPEC §7): statistics and the summary of a run's time series, and pictures of
+//! its flow snapshots — vorticity, stream function, streamlines in the four observer frames, and
+//! resampling from the stretched MAC grid onto uniform images.
+//!
+//! Everything here is a pure function of the solver's outputs ([`platefall_core::sim::StepSample`],
+//! [`platefall_core::sim::FieldSnapshot`], [`platefall_core::grid::GridGeometry`]): no I/O, no Rerun types. The
+//! logger thread (`record`) calls the painting, so that work runs beside the solver, not in it.
+//!
+//! - [`analysis`]: developed windows, means, the dominant lift frequency, turn counting.
+//! - [`summary`]: the run summary with its stable JSON keys; [`report`]: the end-of-run text;
+//!   [`regime`]: what a falling plate is doing (steady, fluttering, tumbling, chaotic).
+//! - [`fields`]: the staggered-grid quantities. [`vorticity_at_nodes`] (ω = ∂v/∂x − ∂u/∂y at cell
+//!   corners), [`stream_function_at_nodes`] (ψ with u = ψ_y, v = −ψ_x, integrated from the MAC face
+//!   fluxes: exact for a discretely divergence-free field), and [`StreamFrame`], the observer frames
+//!   of SPEC §7 with the velocity and stream function of each observer.
+//! - [`resample`]: separable bilinear interpolation from a tensor-product (stretched) grid onto a
+//!   uniform image ([`ImageGrid`], [`AxisWeights`]).
+//! - [`contour`]: iso-lines of a scalar on a tensor grid (marching squares, joined into polylines).
+//! - [`painter`]: [`FieldPainter`] puts it together: one call turns a snapshot into the three
+//!   images (vorticity, pressure, speed) and the streamlines, with all interpolation weights
+//!   precomputed once per run.
+//! - [`wake`]: the same three fields over a long window that follows the plate along its path
+//!   ([`WakePainter`], [`PathHeading`]).
+//! - [`plot_range`]: the value ranges the viewer's plots open on ([`PlotRanges`]), chosen from
+//!   the case so that the developed motion fills them and the start-up spike lies outside.
+pub mod analysis;
+pub mod contour;
+pub mod fields;
+pub mod painter;
+pub mod plot_range;
+pub mod regime;
+pub mod report;
+pub mod resample;
+pub mod summary;
+pub mod wake;
+
+pub use contour::{isolines, simplify_polyline, Polyline};
+pub use fields::{
+    cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, SnapshotFields,
+    StreamFrame,
+};
+pub use painter::{FieldPainter, PaintedFields, PainterOptions};
+pub use plot_range::PlotRanges;
+pub use resample::{bilinear, bilinear_at_points, AxisWeights, FieldWindow, ImageGrid};
+pub use wake::{default_wake_window, PathHeading, WakeImages, WakePainter};

@@ -1,0 +1,103 @@
+//! `--csv`: one line per step, written (buffered) on the logger thread through a [`PendingFile`]
+//! (renamed into place when complete), ending with a trailer line that says how the run ended:
+//!
+//! ```text
+//! # platefall: status=completed steps=1234 t=80
+//! # platefall: status=diverged steps=57 t=0.53 reason=the flow solution diverged at …
+//! ```
+//!
+//! `status` is `completed`, `diverged`, `interrupted` or `output_failed`; `steps` the data rows;
+//! `t` the last row's time; `reason` (to the end of the line) what stopped the run. Readers skip
+//! it as a comment: `pandas.read_csv(f, comment="#")`, `numpy.loadtxt(f, delimiter=",",
+//! skiprows=1)`; `grep -v '^#'` gives the bare table.
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+
+use super::output::{LinkCheck, OutputError, PendingFile};
+use platefall_core::sim::{RunStatus, StepSample};
+
+/// The header line (column names; angles in radians, everything non-dimensional).
+pub const CSV_HEADER: &str = "time,step,dt,C_L,C_D,C_M,X,Y,theta,Xdot,Ydot,thetadot,V,gamma,alpha";
+
+/// The start of the trailer line.
+pub const CSV_TRAILER: &str = "# platefall:";
+
+/// A buffered per-step CSV writer.
+pub struct CsvWriter {
+    out: PendingFile,
+    rows: u64,
+    last_t: f64,
+}
+
+impl CsvWriter {
+    /// Creates the temporary file and writes the header.
+    pub fn create(path: &Path) -> Result<Self, OutputError> {
+        let mut out = PendingFile::create("--csv", path)?;
+        writeln!(out, "{CSV_HEADER}").map_err(|e| out.fail(format!("write failed: {e}")))?;
+        Ok(Self {
+            out,
+            rows: 0,
+            last_t: 0.0,
+        })
+    }
+
+    /// Appends one step. Numbers use Rust's shortest round-trip formatting (exact).
+    pub fn write(&mut self, s: &StepSample) -> Result<(), OutputError> {
+        writeln!(
+            self.out,
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            s.t,
+            s.step,
+            s.dt,
+            s.cl,
+            s.cd,
+            s.cm,
+            s.x,
+            s.y,
+            s.theta,
+            s.xdot,
+            s.ydot,
+            s.omega,
+            s.speed,
+            s.gamma,
+            s.alpha
+        )
+        .map_err(|e| self.out.fail(format!("write failed: {e}")))?;
+        self.rows += 1;
+        self.last_t = s.t;
+        Ok(())
+    }
+
+    /// An error about this file.
+    pub fn fail(&self, reason: impl Into<String>) -> OutputError {
+        self.out.fail(reason)
+    }
+
+    /// A handle that notices if the file being written is removed.
+    pub fn link_check(&self) -> LinkCheck {
+        self.out.link_check()
+    }
+
+    /// Writes the trailer, then syncs and renames the file into place; returns its final name and
+    /// the number of data rows.
+    pub fn finish(mut self, status: &RunStatus) -> Result<(PathBuf, u64), OutputError> {
+        let trailer = trailer(status, self.rows, self.last_t);
+        writeln!(self.out, "{trailer}").map_err(|e| self.out.fail(format!("write failed: {e}")))?;
+        let (path, _) = self.out.commit()?;
+        Ok((path, self.rows))
+    }
+}
+
+/// The trailer line for a run that ended with `status` after `rows` rows, the last at time `t`.
+pub fn trailer(status: &RunStatus, rows: u64, t: f64) -> String {
+    let reason = match status {
+        RunStatus::Diverged(why) | RunStatus::OutputFailed(why) => {
+            format!(" reason={}", why.replace(['\n', '\r'], " "))
+        }
+        RunStatus::Completed | RunStatus::Interrupted => String::new(),
+    };
+    format!(
+        "{CSV_TRAILER} status={} steps={rows} t={t}{reason}",
+        status.name()
+    )
+}

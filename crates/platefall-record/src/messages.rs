@@ -1,0 +1,60 @@
+//! The messages from the solver thread to the logger thread: the solver's own outputs
+//! ([`StepSample`], [`FieldSnapshot`]) plus what the recording needs around them; and what the
+//! viewer side reports back about a live stream ([`ConnectReport`], the same with or without the
+//! `viewer` feature).
+use std::sync::Arc;
+
+use platefall_core::grid::GridGeometry;
+use platefall_core::sim::{FieldSnapshot, RunStatus, StepSample};
+
+/// Everything about a run that does not change while it runs; given when the logger starts.
+#[derive(Clone, Debug)]
+pub struct RunInfo {
+    /// "static" | "forced" | "pinned" | "free".
+    pub case: String,
+    /// One-line human description, e.g. "free fall, card preset, Re 4770, N=32".
+    pub title: String,
+    /// The full resolved configuration as pretty JSON (enough to reproduce the run).
+    pub config_json: String,
+    /// The command line as typed (argv joined with shell quoting).
+    pub command_line: String,
+    /// Program version (`CARGO_PKG_VERSION` plus git describe when known).
+    pub version: String,
+    /// Plate thickness as a fraction of the chord (the plate is the rectangle
+    /// [-0.5, 0.5] x [-t/2, t/2] in body coordinates, chord = 1).
+    pub thickness: f64,
+    /// Body-fixed grid geometry shared by every field snapshot.
+    pub grid: Arc<GridGeometry>,
+}
+
+/// How the run ended, with its summary; sent once, last.
+#[derive(Clone, Debug)]
+pub struct RunOutcome {
+    pub status: RunStatus,
+    /// The summary JSON (pretty) as written by `--summary`.
+    pub summary_json: String,
+    /// The human-readable end-of-run report (markdown-ish plain text).
+    pub report: String,
+}
+
+/// One message on the solver → logger channel.
+#[derive(Clone, Debug)]
+pub enum Message {
+    /// Every step, never dropped.
+    Step(StepSample),
+    /// A field snapshot, at the field cadence; may be thinned.
+    Field(Box<FieldSnapshot>),
+    Finish(RunOutcome),
+}
+
+/// What a --connect / --spawn stream did.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ConnectReport {
+    pub url: String,
+    /// Messages handed to the gRPC client.
+    pub sent: u64,
+    /// Messages dropped because the viewer did not keep up (or was not there).
+    pub dropped: u64,
+    /// True if a viewer was connected at some point.
+    pub ever_connected: bool,
+}

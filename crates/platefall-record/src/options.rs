@@ -1,0 +1,125 @@
+//! Validated recording options: everything the logger needs. The command line builds them
+//! (`cli::record_args`); Rust callers build them directly.
+use std::net::{IpAddr, SocketAddr};
+use std::path::PathBuf;
+
+use super::view_options::ViewOptions;
+use platefall_post::{FieldWindow, StreamFrame};
+
+/// Default convective time between field snapshots (see the size budget in `record/mod.rs`).
+pub const DEFAULT_FIELD_EVERY: f64 = 0.1;
+/// Default image size: pixels along the longer side of the field window.
+pub const DEFAULT_FIELD_RES: usize = 256;
+/// Accepted range of the field image size.
+pub const FIELD_RES_RANGE: std::ops::RangeInclusive<usize> = 16..=2048;
+/// Default gRPC port (Rerun's own default).
+pub const DEFAULT_PORT: u16 = 9876;
+
+/// How progress is shown on stderr.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum ProgressMode {
+    /// A bar on a terminal, plain lines every ~10 s otherwise.
+    #[default]
+    Auto,
+    /// Always the bar (indicatif).
+    Bar,
+    /// Always plain lines (every ~10 s).
+    Lines,
+    /// Nothing.
+    Off,
+}
+
+/// `--serve` settings.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ServeOptions {
+    pub bind: IpAddr,
+    pub port: u16,
+    /// As accepted by Rerun: "25%", "2GB", "unlimited".
+    pub memory_limit: String,
+}
+
+impl ServeOptions {
+    /// The URL a viewer opens: `rerun+http://HOST:PORT/proxy` (127.0.0.1 for an unspecified bind).
+    pub fn url(&self) -> String {
+        let host = if self.bind.is_unspecified() {
+            IpAddr::from([127, 0, 0, 1])
+        } else {
+            self.bind
+        };
+        format!("rerun+http://{}/proxy", SocketAddr::new(host, self.port))
+    }
+}
+
+/// Validated recording options; everything the logger needs.
+///
+/// Built by the command line, or directly (tests, benches): [`RecordOptions::default`]
+/// records nothing; [`RecordOptions::to_file`] writes one .rrd and shows no progress.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RecordOptions {
+    /// The .rrd file to write (None: no file).
+    pub save: Option<PathBuf>,
+    /// Host a gRPC server.
+    pub serve: Option<ServeOptions>,
+    /// Push to an already-running viewer at this URL (never stalls the run; see `record/mod.rs`).
+    pub connect: Option<String>,
+    /// Start a local viewer (`rerun` on PATH) and stream to it.
+    pub spawn: bool,
+    /// Convective time between field snapshots (> 0).
+    pub field_every: f64,
+    /// Image pixels along the longer side of `field_window`.
+    pub field_res: usize,
+    /// Field image window in body coordinates.
+    pub field_window: FieldWindow,
+    /// Observer frame of streamlines and the speed image.
+    pub streamlines_frame: StreamFrame,
+    /// Per-step CSV output.
+    pub csv: Option<PathBuf>,
+    pub progress: ProgressMode,
+    /// End time of the run in convective units (for progress and ETA); 0 or non-finite if unknown.
+    pub t_end: f64,
+    /// Capacity of the solver → logger channel in messages.
+    pub channel_capacity: usize,
+    /// At most this many field snapshots queued at once; more are skipped (and counted).
+    pub max_fields_in_flight: usize,
+    /// Convective time between the plate outlines of the strobe picture.
+    pub strobe_every: f64,
+    /// The wake pictures and the plots' ranges.
+    pub view: ViewOptions,
+}
+
+impl Default for RecordOptions {
+    fn default() -> Self {
+        Self {
+            save: None,
+            serve: None,
+            connect: None,
+            spawn: false,
+            field_every: DEFAULT_FIELD_EVERY,
+            field_res: DEFAULT_FIELD_RES,
+            field_window: FieldWindow::default(),
+            streamlines_frame: StreamFrame::default(),
+            csv: None,
+            progress: ProgressMode::Off,
+            t_end: 0.0,
+            channel_capacity: 1024,
+            max_fields_in_flight: 4,
+            strobe_every: 0.5,
+            view: ViewOptions::default(),
+        }
+    }
+}
+
+impl RecordOptions {
+    /// Only a file sink at `path`, no progress output, default cadence and resolution.
+    pub fn to_file(path: impl Into<PathBuf>) -> Self {
+        Self {
+            save: Some(path.into()),
+            ..Self::default()
+        }
+    }
+
+    /// True if anything at all is recorded or streamed.
+    pub fn has_rerun_sink(&self) -> bool {
+        self.save.is_some() || self.serve.is_some() || self.connect.is_some() || self.spawn
+    }
+}

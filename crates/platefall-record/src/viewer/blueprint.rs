@@ -1,0 +1,186 @@
+//! The default viewer layout sent with every recording.
+//!
+//! ```text
+//! ┌─────────────────────────────────────────┬───────────────────────────┐
+//! │ Wake [Vorticity|Pressure|Speed]         │ Coefficients (C_L C_D C_M)│
+//! │  12 × 6 chords along the path, Y up     │                           │
+//! ├────────────────────┬────────────────────┼───────────────────────────┤
+//! │ Close-up [ω|p|speed]│ Trajectory: path,  │ Motion (V θ̇ γ α)          │
+//! │  + streamlines,    │  strobe and the    ├───────────────────────────┤
+//! │  following, Y up   │  vorticity in place│ [Config|Summary|Status|   │
+//! │                    │                    │  C vs α|V,θ̇ vs α|Solver]  │
+//! └────────────────────┴────────────────────┴───────────────────────────┘
+//! ```
+//! Each flow tab shows one field image (the others are excluded from it). The plots open on the
+//! case's ranges ([`platefall_post::PlotRanges`]): the developed motion fills them, the start-up
+//! spike is outside (zoom out to see it). The wake and close-up views open on fixed bounds, so
+//! they do not zoom while the windows turn. The blueprint and selection panels start collapsed
+//! (the views get the room); the time panel opens on the `time` timeline.
+use rerun::blueprint::components::PanelState;
+use rerun::blueprint::{
+    Blueprint, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial2DView, Tabs,
+    TextDocumentView, TextLogView, TimePanel, TimeSeriesView, Vertical,
+};
+use rerun::{RecordingStream, RecordingStreamResult};
+
+use super::layout::paths;
+use super::polar::polar_axes;
+use super::view_properties::{send_with_properties, ViewProperties};
+use platefall_post::{FieldWindow, PlotRanges};
+
+/// What the views are fitted to.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ViewFit {
+    /// Distance from the plate centre to the farthest corner of the close-up window (chords).
+    pub closeup_reach: f64,
+    /// The wake window in the path frame (chords).
+    pub wake: FieldWindow,
+    /// The plots' vertical ranges (None: automatic).
+    pub plots: Option<PlotRanges>,
+}
+
+/// A flow view of one `field` under `base` (the other fields excluded), with `extra` entities.
+fn flow_view(name: &str, origin: &str, base: &str, field: &str, extra: &[String]) -> ContainerLike {
+    let mut contents: Vec<String> = vec![format!("+ {base}/{field}")];
+    contents.extend(extra.iter().cloned());
+    Spatial2DView::new(name)
+        .with_origin(origin)
+        .with_contents(contents)
+        .into()
+}
+
+/// Three tabs (vorticity, pressure, speed) of `flow_view`s, each fitted to `bounds` (x, y).
+fn field_tabs(
+    props: &mut ViewProperties,
+    title: &str,
+    origin: &str,
+    base: &str,
+    extra: &[String],
+    bounds: ([f64; 2], [f64; 2]),
+) -> ContainerLike {
+    let views: Vec<ContainerLike> = paths::FIELDS
+        .iter()
+        .zip(["Vorticity", "Pressure", "Speed"])
+        .map(|(field, label)| {
+            let view = flow_view(&format!("{title}: {label}"), origin, base, field, extra);
+            props.bounds(&view, bounds.0, bounds.1);
+            view
+        })
+        .collect();
+    Tabs::new(views).with_name(title).into()
+}
+
+/// The wake along the path and the close-up with streamlines.
+fn flow_views(props: &mut ViewProperties, fit: &ViewFit) -> (ContainerLike, ContainerLike) {
+    let w = fit.wake;
+    let wake = field_tabs(
+        props,
+        "Wake",
+        paths::WAKE_SCREEN,
+        paths::WAKE,
+        &[
+            format!("+ {}", paths::WAKE_PLATE),
+            format!("+ {}/**", paths::TRAJECTORY),
+        ],
+        // The view looks through the mirrored path frame: y on screen is −y.
+        ([w.x0, w.x1], [-w.y1, -w.y0]),
+    );
+    let r = fit.closeup_reach;
+    let closeup_extra = [
+        format!("+ {}", paths::OUTLINE),
+        format!("+ {}", paths::STREAMLINES),
+        format!("+ {}", paths::REACH),
+    ];
+    let closeup = field_tabs(
+        props,
+        "Close-up",
+        paths::FOLLOW,
+        paths::PLATE,
+        &closeup_extra,
+        ([-r, r], [-r, r]),
+    );
+    (wake, closeup)
+}
+
+/// The plots against time and against α, fitted to the case's ranges.
+fn plots(props: &mut ViewProperties, fit: &ViewFit) -> [ContainerLike; 4] {
+    let coefficients: ContainerLike = TimeSeriesView::new("Coefficients")
+        .with_origin(paths::COEFFICIENTS)
+        .into();
+    let motion: ContainerLike = TimeSeriesView::new("Motion")
+        .with_origin(paths::MOTION)
+        .into();
+    let polar = |name: &str, curves: &str| -> ContainerLike {
+        Spatial2DView::new(name)
+            .with_origin(paths::POLAR_SCREEN)
+            .with_contents([format!("+ {curves}/**")])
+            .into()
+    };
+    let polar_coefficients = polar("C_L, C_D, C_M vs α", paths::POLAR_COEFFICIENTS);
+    let polar_motion = polar("V, dθ/dt vs α", paths::POLAR_MOTION);
+    if let Some(r) = fit.plots {
+        props.y_range(&coefficients, r.coefficients);
+        props.y_range(&motion, r.motion);
+        for (view, axes) in [&polar_coefficients, &polar_motion]
+            .into_iter()
+            .zip(polar_axes(Some(r)))
+        {
+            let (x, y) = axes.bounds();
+            props.bounds(view, x, y);
+        }
+    }
+    [coefficients, motion, polar_coefficients, polar_motion]
+}
+
+/// The default blueprint (see the module docs) and the view properties it needs.
+pub(crate) fn default_blueprint(fit: &ViewFit) -> (Blueprint, ViewProperties) {
+    let mut props = ViewProperties::default();
+    let (wake, closeup) = flow_views(&mut props, fit);
+    let trajectory = Spatial2DView::new("Trajectory")
+        .with_origin(paths::WORLD_SCREEN)
+        .with_contents([
+            format!("+ {}/vorticity", paths::WAKE),
+            format!("+ {}", paths::WAKE_WINDOW),
+            format!("+ {}/**", paths::TRAJECTORY),
+            format!("+ {}/**", paths::STROBE),
+            format!("+ {}", paths::OUTLINE),
+        ]);
+    let [coefficients, motion, polar_coefficients, polar_motion] = plots(&mut props, fit);
+    let solver = TimeSeriesView::new("Solver").with_contents([
+        format!("+ {}/**", paths::SOLVER),
+        format!("+ {}", paths::SKIPPED_FIELDS),
+    ]);
+    let info = Tabs::new([
+        ContainerLike::from(TextDocumentView::new("Run configuration").with_origin(paths::CONFIG)),
+        TextDocumentView::new("Summary")
+            .with_origin(paths::SUMMARY)
+            .into(),
+        TextLogView::new("Status").with_origin(paths::STATUS).into(),
+        polar_coefficients,
+        polar_motion,
+        solver.into(),
+    ]);
+    let bottom = Horizontal::new([closeup, trajectory.into()]);
+    let left = Vertical::new([wake, bottom.into()]).with_row_shares([1.1, 1.0]);
+    let right = Vertical::new([coefficients, motion, info.into()]).with_row_shares([1.0, 1.0, 1.1]);
+    let blueprint =
+        Blueprint::new(Horizontal::new([left.into(), right.into()]).with_column_shares([3.0, 2.0]))
+            .with_blueprint_panel(BlueprintPanel::new().with_state(PanelState::Collapsed))
+            .with_selection_panel(SelectionPanel::new().with_state(PanelState::Collapsed))
+            .with_time_panel(
+                TimePanel::new()
+                    .with_timeline("time")
+                    .with_state(PanelState::Collapsed),
+            )
+            .with_auto_views(false);
+    (blueprint, props)
+}
+
+/// Sends the default blueprint with its view properties (active and default).
+pub(crate) fn send_default_blueprint(
+    rec: &RecordingStream,
+    fit: &ViewFit,
+) -> RecordingStreamResult<()> {
+    let (blueprint, props) = default_blueprint(fit);
+    send_with_properties(rec, &blueprint, &props)
+}

@@ -1,0 +1,238 @@
+//! The Rerun side of a recording (cargo feature `viewer`, on by default): the sinks (file,
+//! `--serve`, `--connect`, `--spawn`), the scene (entities, documented in `record/mod.rs`) and the
+//! default blueprint (sent by the scene when it starts). The logger thread drives a [`Viewer`] and knows nothing of Rerun.
+mod blueprint;
+mod curves;
+mod images;
+mod layout;
+mod polar;
+mod rrd_file;
+mod scene;
+mod sinks;
+mod statics;
+mod text;
+mod view_properties;
+mod wake;
+
+use std::path::PathBuf;
+use std::str::FromStr as _;
+use std::sync::atomic::Ordering;
+use std::sync::Arc;
+use std::time::Duration;
+
+use anyhow::Context as _;
+use rerun::RecordingStream;
+
+use super::messages::{ConnectReport, RunInfo, RunOutcome};
+use super::options::RecordOptions;
+use super::output::OutputError;
+pub use layout::paths;
+use platefall_core::sim::{FieldSnapshot, StepSample};
+use rrd_file::RrdFile;
+use scene::Scene;
+use sinks::{open_sinks, ConnectStats};
+
+/// This build can record for Rerun.
+pub const AVAILABLE: bool = true;
+
+/// Rerun application id of every recording.
+pub const APPLICATION_ID: &str = "platefall";
+
+/// What the viewer side produced, after [`Viewer::finish`].
+pub struct ViewerReport {
+    /// The finalised .rrd file and its size in bytes.
+    pub rrd: Option<(PathBuf, u64)>,
+    pub connect: Option<ConnectReport>,
+    /// The --serve server, still up (None if not serving or after an error).
+    pub server: Option<LiveServer>,
+    pub notes: Vec<String>,
+}
+
+/// A --serve server kept up after the run so that late viewers still get the whole run.
+pub struct LiveServer(RecordingStream);
+
+impl LiveServer {
+    /// Flushes to connected viewers (at most 2 s) and shuts the server down.
+    pub fn shut_down(self) {
+        let _ = self.0.flush_with_timeout(Duration::from_secs(2));
+    }
+}
+
+/// The recording stream of one run and its scene.
+pub struct Viewer {
+    rec: RecordingStream,
+    scene: Option<Scene>,
+    rrd: Option<Arc<RrdFile>>,
+    serving: bool,
+    connect: Option<(String, Arc<ConnectStats>)>,
+    notes: Vec<String>,
+}
+
+impl Viewer {
+    /// Opens every sink asked for in `opts`, sends the blueprint and the static parts of the
+    /// scene. An error here means nothing was started.
+    pub fn open(opts: &RecordOptions, info: &RunInfo) -> anyhow::Result<Viewer> {
+        let set = open_sinks(opts)?;
+        for n in &set.notes {
+            eprintln!("platefall: warning: {n}");
+        }
+        if let Some(url) = &set.serve_url {
+            eprintln!("platefall: serving the run at {url} (open it with `rerun {url}`)");
+        }
+        let rec = rerun::RecordingStreamBuilder::new(APPLICATION_ID)
+            .recording_name(info.title.clone())
+            .enabled(true)
+            .set_sinks(set.sinks)
+            .context("cannot start the Rerun recording")?;
+        rec.set_log_tick_enabled(false);
+        rec.set_log_time_enabled(false);
+        let scene = Scene::start(rec.clone(), info, opts).context("recording")?;
+        Ok(Viewer {
+            rec,
+            scene: Some(scene),
+            rrd: set.rrd,
+            serving: set.serve_url.is_some(),
+            connect: set.connect,
+            notes: set.notes,
+        })
+    }
+
+    /// Runs `f` on the scene; after a recording error the scene is dropped and the error returned.
+    fn with_scene<T: Default>(
+        &mut self,
+        f: impl FnOnce(&mut Scene) -> rerun::RecordingStreamResult<T>,
+    ) -> Result<T, String> {
+        let Some(scene) = &mut self.scene else {
+            return Ok(T::default());
+        };
+        f(scene).map_err(|e| {
+            self.scene = None;
+            format!("recording: {e}")
+        })
+    }
+
+    pub fn step(&mut self, s: StepSample) -> Result<(), String> {
+        self.with_scene(|sc| sc.step(s))
+    }
+
+    /// Paints and logs a snapshot; false if it did not fit the grid (reported in the recording).
+    pub fn field(&mut self, f: &FieldSnapshot, skipped: u64) -> Result<bool, String> {
+        self.with_scene(|sc| sc.field(f, skipped))
+    }
+
+    /// Called when the logger is idle: sends steps that have waited long enough.
+    pub fn idle(&mut self) -> Result<(), String> {
+        self.with_scene(|sc| sc.flush_if_stale())
+    }
+
+    /// The live-stream counters so far.
+    pub fn connect_report(&self) -> Option<ConnectReport> {
+        self.connect.as_ref().map(|(url, st)| ConnectReport {
+            url: url.clone(),
+            sent: st.sent.load(Ordering::Relaxed),
+            dropped: st.dropped.load(Ordering::Relaxed),
+            ever_connected: st.ever_connected.load(Ordering::Relaxed),
+        })
+    }
+
+    /// The first write error of the .rrd file so far (cheap).
+    pub fn output_error(&self) -> Option<OutputError> {
+        self.rrd.as_ref().and_then(|f| f.error())
+    }
+
+    /// Checks that the .rrd file being written is still on disk.
+    pub fn check_outputs(&self) -> Option<OutputError> {
+        self.rrd.as_ref().and_then(|f| f.check())
+    }
+
+    /// Logs the outcome and `stats_md`, commits the file (footer, sync, rename) and keeps the
+    /// --serve server up unless an error happened (`errors` gains what went wrong).
+    pub fn finish(
+        mut self,
+        outcome: &RunOutcome,
+        stats_md: &str,
+        errors: &mut Vec<String>,
+    ) -> ViewerReport {
+        if let Err(e) = self.with_scene(|sc| sc.finish(outcome, stats_md)) {
+            errors.push(e);
+        }
+        self.scene = None;
+        let rrd = match self.rrd.take() {
+            Some(file) => commit_file(&self.rec, &file, errors),
+            None => {
+                let _ = self.rec.flush_with_timeout(FLUSH_LIMIT);
+                None
+            }
+        };
+        let connect = self.connect_report();
+        let mut notes = self.notes;
+        if let Some(c) = &connect {
+            notes.extend(connect_note(c, rrd.is_some()));
+        }
+        let server = (self.serving && errors.is_empty()).then(|| LiveServer(self.rec));
+        ViewerReport {
+            rrd,
+            connect,
+            server,
+            notes,
+        }
+    }
+}
+
+/// Longest the end of a run waits for the recording to reach its sinks.
+const FLUSH_LIMIT: Duration = Duration::from_secs(30);
+
+/// Flushes the stream into the file and commits it; the file's name and size, or None with the
+/// reason in `errors` (then nothing is left at the final name).
+fn commit_file(
+    rec: &RecordingStream,
+    file: &RrdFile,
+    errors: &mut Vec<String>,
+) -> Option<(PathBuf, u64)> {
+    let before = file.flushes();
+    let _ = rec.flush_with_timeout(FLUSH_LIMIT);
+    let result = if file.flushes() > before {
+        file.commit()
+    } else {
+        file.discard();
+        Err(file.fail(format!(
+            "the recording did not reach the file within {} s",
+            FLUSH_LIMIT.as_secs()
+        )))
+    };
+    result.map_err(|e| errors.push(e.to_string())).ok()
+}
+
+/// A note for the report when the --connect viewer missed messages.
+fn connect_note(c: &ConnectReport, file_complete: bool) -> Option<String> {
+    let file_note = if file_complete {
+        " (the .rrd file is complete)"
+    } else {
+        ""
+    };
+    if !c.ever_connected {
+        Some(format!(
+            "--connect {}: no viewer was reachable; nothing was streamed there{file_note}",
+            c.url
+        ))
+    } else if c.dropped > 0 {
+        Some(format!(
+            "--connect {}: the viewer did not keep up; {} messages were dropped for it{file_note}",
+            c.url, c.dropped
+        ))
+    } else {
+        None
+    }
+}
+
+/// Is `limit` a memory limit Rerun's server accepts ("25%", "2GB", "unlimited")?
+pub fn check_memory_limit(limit: &str) -> Result<(), String> {
+    rerun::MemoryLimit::parse(limit).map(|_| ())
+}
+
+/// Is `url` a Rerun proxy URL (`rerun+http://host:port/proxy`)?
+pub fn check_proxy_url(url: &str) -> Result<(), String> {
+    rerun::external::re_uri::ProxyUri::from_str(url)
+        .map(|_| ())
+        .map_err(|e| e.to_string())
+}

@@ -1,0 +1,95 @@
+//! The wake in the recording: at every field snapshot, `/world/wake` is posed at the plate's
+//! centre and turned to the path heading, and the three wake images and the plate (as it was
+//! then) are logged under it (the painting is [`platefall_post::wake`]). The wake view looks through `/world/wake/screen`; the
+//! trajectory view shows `/world/wake/vorticity` in place.
+use std::sync::Arc;
+
+use rerun::{Quaternion, RecordingStream, RecordingStreamResult, Transform3D};
+
+use super::curves::plate_drawing;
+use super::images::log_field_images;
+use super::layout::{paths, z_rotation, WAKE_IMAGE_LEVELS};
+use platefall_core::grid::GridGeometry;
+use platefall_core::sim::{FieldSnapshot, StepSample};
+use platefall_post::{
+    FieldWindow, ImageGrid, PathHeading, SnapshotFields, StreamFrame, WakePainter,
+};
+
+/// Chords of path over which the heading of the wake window is averaged (about one and a half
+/// turns of a tumbling card, so the tumbling's wiggles average out).
+const HEADING_SPAN: f64 = 4.0;
+
+/// The wake painter and the heading it is turned to.
+pub(super) struct WakeScene {
+    painter: WakePainter,
+    heading: PathHeading,
+    thickness: f64,
+}
+
+impl WakeScene {
+    pub(super) fn new(
+        grid: Arc<GridGeometry>,
+        window: FieldWindow,
+        long_side: usize,
+        frame: StreamFrame,
+        thickness: f64,
+    ) -> Self {
+        Self {
+            painter: WakePainter::new(grid, window, long_side, frame),
+            heading: PathHeading::new(HEADING_SPAN),
+            thickness,
+        }
+    }
+
+    /// The wake image geometry.
+    pub(super) fn image(&self) -> ImageGrid {
+        self.painter.image()
+    }
+
+    /// Follows the plate's path.
+    pub(super) fn step(&mut self, s: &StepSample) {
+        self.heading.push(s.x, s.y, s.xdot, s.ydot);
+    }
+
+    /// Poses the path frame at the plate's centre (x, y), turned to the current heading, and
+    /// draws the plate (pitch `theta`) in it: the wake view shows this plate, so that image and
+    /// plate agree between snapshots (the caller has set the time).
+    pub(super) fn log_pose(
+        &self,
+        rec: &RecordingStream,
+        x: f64,
+        y: f64,
+        theta: f64,
+    ) -> RecordingStreamResult<()> {
+        let heading = self.heading.angle();
+        rec.log(
+            paths::WAKE,
+            &Transform3D::from_translation_rotation(
+                [x as f32, y as f32, 0.0],
+                Quaternion::from_xyzw(z_rotation(heading)),
+            ),
+        )?;
+        rec.log(
+            paths::WAKE_PLATE,
+            &plate_drawing(self.thickness, theta - heading),
+        )
+    }
+
+    /// Paints and logs the wake of `snap` (the caller has set the snapshot's time).
+    pub(super) fn log(
+        &self,
+        rec: &RecordingStream,
+        snap: &FieldSnapshot,
+        fields: &SnapshotFields,
+    ) -> RecordingStreamResult<()> {
+        let images = self.painter.paint(snap, fields, self.heading.angle());
+        self.log_pose(rec, snap.x, snap.y, snap.theta)?;
+        log_field_images(
+            rec,
+            paths::WAKE,
+            [&images.vorticity, &images.pressure, &images.speed],
+            &self.image(),
+            WAKE_IMAGE_LEVELS,
+        )
+    }
+}

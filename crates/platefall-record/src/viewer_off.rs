@@ -1,0 +1,67 @@
+//! Stand-in for the Rerun side of a recording when platefall is built without the `viewer`
+//! feature: nothing can be opened, so every sink option is refused before a run starts
+//! (`cli::record_args`), and the logger records CSV and progress only.
+use std::path::PathBuf;
+
+use super::messages::{ConnectReport, RunInfo, RunOutcome};
+use super::options::RecordOptions;
+use super::output::OutputError;
+use platefall_core::sim::{FieldSnapshot, StepSample};
+
+/// This build cannot record for Rerun.
+pub const AVAILABLE: bool = false;
+
+/// A --serve server (none can exist in this build).
+pub enum LiveServer {}
+
+impl LiveServer {
+    pub fn shut_down(self) {
+        match self {}
+    }
+}
+
+/// What the viewer side produced (nothing, in this build).
+pub struct ViewerReport {
+    pub rrd: Option<(PathBuf, u64)>,
+    pub connect: Option<ConnectReport>,
+    pub server: Option<LiveServer>,
+    pub notes: Vec<String>,
+}
+
+/// No recording stream can be opened in this build.
+pub enum Viewer {}
+
+impl Viewer {
+    pub fn open(_opts: &RecordOptions, _info: &RunInfo) -> anyhow::Result<Viewer> {
+        anyhow::bail!("this platefall was built without the `viewer` feature")
+    }
+    pub fn step(&mut self, _s: StepSample) -> Result<(), String> {
+        match *self {}
+    }
+    pub fn field(&mut self, _f: &FieldSnapshot, _skipped: u64) -> Result<bool, String> {
+        match *self {}
+    }
+    pub fn idle(&mut self) -> Result<(), String> {
+        match *self {}
+    }
+    pub fn connect_report(&self) -> Option<ConnectReport> {
+        match *self {}
+    }
+    pub fn output_error(&self) -> Option<OutputError> {
+        match *self {}
+    }
+    pub fn check_outputs(&self) -> Option<OutputError> {
+        match *self {}
+    }
+    pub fn finish(self, _o: &RunOutcome, _stats: &str, _errors: &mut Vec<String>) -> ViewerReport {
+        match self {}
+    }
+}
+
+pub fn check_memory_limit(_limit: &str) -> Result<(), String> {
+    Err("this build has no viewer".into())
+}
+
+pub fn check_proxy_url(_url: &str) -> Result<(), String> {
+    Err("this build has no viewer".into())
+}
