@@ -9,13 +9,13 @@
 //!   turn over the developed turns, and the wall time per step and per turn on all cores and on
 //!   one core.
 //!
-//! Both run inside a rayon pool of the requested size, as a run does (`cli::threads`).
+//! Both run inside a rayon pool of the requested size, as a run does (`crate::pool`).
 use std::time::Instant;
 
-use clap::Parser;
 use serde::Serialize;
 
-use crate::cli::{run_config, threads, Cli};
+use crate::pool;
+use platefall_core::config::{Plate, RunBuilder};
 use platefall_core::flow::{FarFieldScheme, FlowParams, FlowSolver, OuterBc};
 use platefall_core::grid::{Grid, GridSpec};
 use platefall_core::sim::{Case, Simulation};
@@ -43,7 +43,7 @@ pub fn bench_one(
     scheme: FarFieldScheme,
     threads: usize,
 ) -> anyhow::Result<BenchRow> {
-    let pool = threads::pool(threads)?;
+    let pool = pool::pool(threads)?;
     let spec = GridSpec::modern(resolution);
     let grid = Grid::new(&spec)?;
     let (nx, ny, cells) = (grid.nx, grid.ny, grid.cells());
@@ -84,7 +84,7 @@ fn time_steps(flow: &mut FlowSolver, case: &Case, steps: usize) -> anyhow::Resul
         let limit = flow.prepare()?;
         let b = Instant::now();
         let dt = limit.min(0.01);
-        let next = case.prescribed_state(0.4 + flow.t + dt).frame();
+        let next = case.prescribed_state(0.4 + flow.t() + dt).frame();
         flow.advance(dt, next)?;
         let c = Instant::now();
         if k >= 5 {
@@ -140,7 +140,7 @@ pub struct CardRow {
     pub wall_seconds: f64,
 }
 
-/// Runs `platefall free --resolution N --turns T` (no output) on all cores (`threads`, 0 = one
+/// Runs the card's free fall as `platefall free --resolution N --turns T` does (no output) on all cores (`threads`, 0 = one
 /// per core): the developed turns 2..=T give steps per turn and the time per step; then
 /// `single_steps` more steps on one core give the single-core time per step.
 pub fn bench_card(
@@ -150,14 +150,18 @@ pub fn bench_card(
     threads: usize,
     single_steps: usize,
 ) -> anyhow::Result<CardRow> {
-    let config = card_config(resolution, turns, scheme)?;
+    let config = RunBuilder::free(Plate::card())
+        .resolution(resolution)
+        .turns(turns as f64)
+        .far_field(scheme)
+        .build()?;
     let mut sim = Simulation::new(config)?;
-    let cells = sim.flow.grid.cells();
-    let all = threads::pool(threads)?;
+    let cells = sim.flow().grid().cells();
+    let all = pool::pool(threads)?;
     let start = Instant::now();
     let marks = all.install(|| turn_marks(&mut sim, turns))?;
     let wall_seconds = start.elapsed().as_secs_f64();
-    let one = threads::pool(1)?;
+    let one = pool::pool(1)?;
     let t1 = Instant::now();
     one.install(|| (0..single_steps).try_for_each(|_| sim.step().map(|_| ())))?;
     let one_per_step = t1.elapsed().as_secs_f64() / single_steps.max(1) as f64;
@@ -176,35 +180,9 @@ pub fn bench_card(
         ns_per_cell_step_one: 1e9 * one_per_step / cells as f64,
         seconds_per_turn_all: steps_per_turn * all_per_step,
         seconds_per_turn_one: steps_per_turn * one_per_step,
-        steps: sim.flow.steps,
+        steps: sim.flow().steps(),
         wall_seconds,
     })
-}
-
-/// The configuration `platefall free` runs at this resolution, turns and scheme.
-fn card_config(
-    resolution: usize,
-    turns: usize,
-    scheme: FarFieldScheme,
-) -> anyhow::Result<platefall_core::sim::RunConfig> {
-    let far = match scheme {
-        FarFieldScheme::Explicit => "explicit",
-        FarFieldScheme::Implicit => "implicit",
-    };
-    let (n, t) = (resolution.to_string(), turns.to_string());
-    let args = [
-        "platefall",
-        "free",
-        "--resolution",
-        &n,
-        "--turns",
-        &t,
-        "--far-field",
-        far,
-        "--no-save",
-    ];
-    let cli = Cli::try_parse_from(args)?;
-    Ok(run_config(&cli.command)?)
 }
 
 /// Steps the run to its end; for k = 0..=turns, (step, seconds since start) when the plate had

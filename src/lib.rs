@@ -2,11 +2,18 @@
 //!
 //! The workspace's crates are its layers, each using only those before it:
 //!
-//! 1. `platefall-core` — physics and the run description (no I/O, no clock, no viewer).
-//! 2. `platefall-post` — the summary and report of a run, pictures of its fields.
-//! 3. `platefall-record` — the logger thread, CSV, progress and (feature `viewer`) Rerun.
-//! 4. this crate — the command line: [`cli`] (the only layer that knows clap), [`bench`], and
-//!    [`sweep`] (parameter sweeps: many runs of this program, locally or as a Slurm job array).
-pub mod bench;
+//! 1. `platefall-core` — physics, the run description and its constructors (no I/O, no clock,
+//!    no viewer).
+//! 2. `platefall-post` — the summary and report of a run, pictures of its fields, phase
+//!    diagrams' data.
+//! 3. `platefall-record` — the logger thread, atomic output files, CSV, progress and (feature
+//!    `viewer`) everything Rerun.
+//! 4. this crate — [`cli`], the command line (the only layer that knows clap), above the sweep
+//!    (parameter sweeps: many runs of this program, locally or as a Slurm job array), the bench,
+//!    the worker pool and the exit codes.
 pub mod cli;
-pub mod sweep;
+
+mod bench;
+mod exit;
+mod pool;
+mod sweep;

@@ -33,14 +33,13 @@ fn demo_recording() {
     let field_res = env_f64("PLATEFALL_DEMO_FIELD_RES", defaults.field_res as f64) as usize;
     let g = grid(250, 200, 0.0625);
     let opts = RecordOptions {
-        t_end,
         field_every,
         field_res,
         max_fields_in_flight: 8,
         ..RecordOptions::to_file(&out)
     };
     let t0 = Instant::now();
-    let mut logger = spawn_logger(opts, run_info(g.clone())).unwrap();
+    let mut logger = spawn_logger(opts, run_info_until(g.clone(), Some(t_end))).unwrap();
     let steps = (t_end / dt).round() as u64;
     let mut snap_time = 0.0;
     let mut offered = 0;

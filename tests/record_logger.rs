@@ -4,7 +4,8 @@ mod record_common;
 
 use std::time::{Duration, Instant};
 
-use platefall_core::sim::RunStatus;
+use platefall_core::flow::FlowError;
+use platefall_core::sim::{RunStatus, SimError};
 use platefall_record::messages::RunOutcome;
 use platefall_record::{paths, spawn_logger, RecordOptions, CSV_HEADER};
 use record_common::*;
@@ -45,10 +46,9 @@ fn full_run_round_trips_through_the_rrd_file() {
     let rrd = dir.join("run.rrd");
     let csv = dir.join("run.csv");
     let g = grid(40, 30, 0.0625);
-    let info = run_info(g.clone());
+    let info = run_info_until(g.clone(), Some(2.0));
     let opts = RecordOptions {
         csv: Some(csv.clone()),
-        t_end: 2.0,
         field_every: 0.1,
         // The synthetic "solver" is far faster than the painter; let every snapshot queue up.
         max_fields_in_flight: 64,
@@ -277,7 +277,13 @@ fn interrupted_and_abandoned_runs_still_give_finalised_files() {
     let mut logger = spawn_logger(RecordOptions::to_file(&rrd), run_info(g.clone())).unwrap();
     drive(&mut logger, &g, 30, 0.01);
     logger
-        .finish(outcome(RunStatus::Diverged("NaN in u at step 30".into())))
+        .finish(outcome(RunStatus::Diverged(SimError::Flow(
+            FlowError::Diverged {
+                t: 0.3,
+                step: 30,
+                reason: "NaN in u".into(),
+            },
+        ))))
         .unwrap();
     let d = decode(&rrd);
     assert!(d.has_footer);
@@ -285,7 +291,7 @@ fn interrupted_and_abandoned_runs_still_give_finalised_files() {
         .texts(paths::STATUS)
         .last()
         .unwrap()
-        .contains("NaN in u at step 30"));
+        .contains("diverged at t = 0.3000 (step 30): NaN in u"));
 
     // The solver errors out and drops the logger without finish().
     let rrd = dir.join("dropped.rrd");

@@ -1,16 +1,14 @@
-//! The case subcommands' options and their translation into a [`RunConfig`].
+//! The case subcommands' options and their translation into the library's [`RunBuilder`]s.
 use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 
 use super::flags::ArgError;
-use super::plate_args::{CouplingArg, PhysicalArgs};
+use super::plate_args::{BodyArgs, CoupledBuilder};
 use super::record_args::RecordArgs;
-use super::Command;
-use platefall_core::flow::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
-use platefall_core::grid::{GridSpec, Stretch};
-use platefall_core::param::{check_whole, Param};
-use platefall_core::sim::{BodyConfig, Case, RunConfig, TimeControl};
+use platefall_core::config::{defaults, RunBuilder};
+use platefall_core::flow::FarFieldScheme;
+use platefall_core::sim::ValidatedConfig;
 
 /// Options shared by every case.
 #[derive(Args, Debug, Clone)]
@@ -20,7 +18,7 @@ pub struct SolverArgs {
     pub re: Option<f64>,
     /// Cells per chord N (h = c/N). The seed used 16; the free-fall rotation rate changes by 17 %
     /// between N = 32 and 64 (see the README), so the default is 64.
-    #[arg(long, default_value_t = 64)]
+    #[arg(long, default_value_t = defaults::RESOLUTION)]
     pub resolution: usize,
     /// End time in convective times c/U from the impulsive start [default depends on the case].
     #[arg(long, allow_negative_numbers = true)]
@@ -39,35 +37,35 @@ pub struct SolverArgs {
     #[arg(long, allow_negative_numbers = true)]
     pub thickness: Option<f64>,
     /// Distance from the plate to the outer boundary, in chords.
-    #[arg(long, default_value_t = 15.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::EXTENT, allow_negative_numbers = true)]
     pub extent: f64,
     /// Cap on the ratio of neighbouring cell sizes in the stretched region.
-    #[arg(long, default_value_t = 1.045, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::GROWTH, allow_negative_numbers = true)]
     pub growth: f64,
     /// Courant number of the convective time-step limit (AB2 with the limited κ = 1/3 scheme was
     /// measured stable at 0.6 and unstable at 0.8).
-    #[arg(long, default_value_t = 0.5, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::CFL, allow_negative_numbers = true)]
     pub cfl: f64,
     /// Time-step ceiling (seed: 0.01).
-    #[arg(long, default_value_t = 0.01, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::DT_MAX, allow_negative_numbers = true)]
     pub dt_max: f64,
     /// The seed's rotation rule Δt·|θ̇| ≤ CC.
-    #[arg(long, default_value_t = 0.005, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::CC, allow_negative_numbers = true)]
     pub cc: f64,
     /// How the transport by the grid velocity is stepped outside the near field: `implicit`
-    /// (line solves; Δt follows the near field), `explicit` (the scheme before issue 8, whose
-    /// Δt is bound by the far field's grid speed |θ̇| × extent), or `auto`: implicit for the
-    /// turning plates (forced, pinned, free), explicit for a static plate (whose grid does not
-    /// move, so the implicit step would only cost more).
+    /// (line solves; Δt follows the near field), `explicit` (explicit everywhere, so Δt is bound
+    /// by the far field's grid speed |θ̇| × extent), or `auto`: implicit for the turning plates
+    /// (forced, pinned, free), explicit for a static plate (whose grid does not move, so the
+    /// implicit step would only cost more).
     #[arg(long, value_enum, default_value_t = FarFieldArg::Auto)]
     pub far_field: FarFieldArg,
     /// Half-width of the near field along x (chords): columns farther out take the grid
     /// transport along them implicitly (with --far-field implicit).
-    #[arg(long, default_value_t = NEAR_DEFAULT, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::NEAR, allow_negative_numbers = true)]
     pub near_x: f64,
     /// Half-height of the near field along y (chords): rows farther out take the grid transport
     /// along them implicitly.
-    #[arg(long, default_value_t = NEAR_DEFAULT, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::NEAR, allow_negative_numbers = true)]
     pub near_y: f64,
     /// Worker threads for the run (0: one per core); the results do not depend on it.
     #[arg(long, default_value_t = 0)]
@@ -85,13 +83,13 @@ pub enum FarFieldArg {
 }
 
 impl FarFieldArg {
-    /// The scheme for a case; `auto` takes the implicit one unless the plate is static.
-    pub fn scheme_for(self, case: &Case) -> FarFieldScheme {
-        match (self, case) {
-            (FarFieldArg::Explicit, _) | (FarFieldArg::Auto, Case::Static { .. }) => {
-                FarFieldScheme::Explicit
-            }
-            _ => FarFieldScheme::Implicit,
+    /// The scheme asked for; None for `auto` (the library's choice for the case: implicit unless
+    /// the plate is static).
+    pub fn scheme(self) -> Option<FarFieldScheme> {
+        match self {
+            FarFieldArg::Auto => None,
+            FarFieldArg::Explicit => Some(FarFieldScheme::Explicit),
+            FarFieldArg::Implicit => Some(FarFieldScheme::Implicit),
         }
     }
 }
@@ -109,10 +107,10 @@ impl From<FarFieldArg> for FarFieldScheme {
 #[derive(Args, Debug)]
 pub struct StaticArgs {
     /// Angle of attack α in radians, in [−π, π].
-    #[arg(long, default_value_t = 0.4, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::ALPHA, allow_negative_numbers = true)]
     pub alpha: f64,
     /// Symmetry-breaking pitch nudge ε (rad): θ = α + ε sin²(πt) during the first convective time.
-    #[arg(long, default_value_t = 0.05, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::KICK, allow_negative_numbers = true)]
     pub kick: f64,
     #[command(flatten)]
     pub solver: SolverArgs,
@@ -123,10 +121,10 @@ pub struct StaticArgs {
 #[derive(Args, Debug)]
 pub struct ForcedArgs {
     /// Final rotation rate θ̇ c/U (positive: counter-clockwise, nose up).
-    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::RATE, allow_negative_numbers = true)]
     pub rate: f64,
     /// Spin-up time from α = 0 to the final rate at constant angular acceleration.
-    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::SPINUP, allow_negative_numbers = true)]
     pub spinup: f64,
     #[command(flatten)]
     pub solver: SolverArgs,
@@ -134,88 +132,14 @@ pub struct ForcedArgs {
     pub record: RecordArgs,
 }
 
-/// Plate properties, the coupling and the body integrator (pinned and free cases).
-#[derive(Args, Debug, Clone)]
-#[command(next_help_heading = "Plate, coupling and release")]
-pub struct BodyArgs {
-    /// Preset giving Re, m*, I*, g*: `card` is the seed's card in sea-level air (SPEC §8; its
-    /// weight is the apparent weight, m_f* = 0) [default: card, unless the plate is described
-    /// physically].
-    #[arg(long, value_enum)]
-    pub preset: Option<Preset>,
-    /// Mass ratio m* = m/(ρc²b) (overrides the preset).
-    #[arg(long, allow_negative_numbers = true)]
-    pub mass: Option<f64>,
-    /// Inertia ratio I* = I/(ρc⁴b) (overrides the preset).
-    #[arg(long, allow_negative_numbers = true)]
-    pub inertia: Option<f64>,
-    /// Gravity g* = g c/U² (overrides the preset; ignored by `pinned`).
-    #[arg(long, allow_negative_numbers = true)]
-    pub gravity: Option<f64>,
-    /// Displaced fluid mass m_f* = ρf × volume/(ρf c² b) (t/c for a plate of thickness t): the
-    /// weight is (m* − m_f*) g* [default: 0, the weight given is the apparent weight].
-    #[arg(long, allow_negative_numbers = true)]
-    pub displaced_mass: Option<f64>,
-    /// An applied moment on the plate, by ρU²c² (counter-clockwise positive).
-    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
-    pub torque: f64,
-    /// How the flow's loads enter the plate's equations (`explicit` reproduces the seed's scheme
-    /// and the earlier results).
-    #[arg(long, value_enum, default_value_t = CouplingArg::Strong)]
-    pub coupling: CouplingArg,
-    /// Adams–Bashforth order for the plate's equations of motion, 1..=6.
-    #[arg(long, default_value_t = 2)]
-    pub ab_order: usize,
-    /// How the Adams–Bashforth history is started at release.
-    #[arg(long, value_enum, default_value_t = AbStartArg::Ramp)]
-    pub ab_start: AbStartArg,
-    /// Hold the plate at its launch attitude for this long before release (flow development)
-    /// [default: 5, or 0 when it starts from rest].
-    #[arg(long, allow_negative_numbers = true)]
-    pub develop: Option<f64>,
-    /// Stop after this many net turns after release, or at --t-end, whichever comes first
-    /// [default: 10 for free, none for pinned].
-    #[arg(long, allow_negative_numbers = true)]
-    pub turns: Option<f64>,
-    #[command(flatten)]
-    pub physical: PhysicalArgs,
-}
-
-impl BodyArgs {
-    /// The development time: as given, else 5 for a launch at speed and 0 from rest.
-    fn develop_for(&self, speed: f64) -> f64 {
-        self.develop
-            .unwrap_or(if speed == 0.0 { 0.0 } else { DEFAULT_DEVELOP })
-    }
-}
-
-/// Development time before release for a plate launched at speed (c/U).
-const DEFAULT_DEVELOP: f64 = 5.0;
-
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
-pub enum Preset {
-    /// The seed's card: chord 3 in, span 8 in, 7.02e-3 lbf, U = 3 ft/s in sea-level air.
-    Card,
-    /// No preset: give --re, --mass, --inertia and --gravity.
-    None,
-}
-
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
-pub enum AbStartArg {
-    /// Raise the order 1, 2, … over the first steps.
-    Ramp,
-    /// The seed's start: extrapolate the history linearly backwards.
-    Extrapolate,
-}
-
 #[derive(Args, Debug)]
 pub struct PinnedArgs {
     /// Angle of attack α₀ (rad) held during development, then released.
-    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::ALPHA0, allow_negative_numbers = true)]
     pub alpha0: f64,
     /// Translation speed on the reference speed (the wind tunnel's; 0: a plate on a pin in still
     /// fluid, e.g. driven by --torque).
-    #[arg(long, default_value_t = 1.0, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::PINNED_SPEED, allow_negative_numbers = true)]
     pub v0: f64,
     #[command(flatten)]
     pub solver: SolverArgs,
@@ -232,10 +156,10 @@ pub struct FreeArgs {
     #[arg(long, allow_negative_numbers = true)]
     pub v0: Option<f64>,
     /// Launch flight-path angle γ₀ (rad; −π/4 is down and to the right).
-    #[arg(long, default_value_t = -std::f64::consts::FRAC_PI_4, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::GAMMA0, allow_negative_numbers = true)]
     pub gamma0: f64,
     /// Launch angle of attack α₀ (rad); the plate is held at θ = γ₀ + α₀ until release.
-    #[arg(long, default_value_t = 0.1, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = defaults::ALPHA0, allow_negative_numbers = true)]
     pub alpha0: f64,
     /// Pitch angle θ₀ at release (rad), instead of α₀ (α₀ = θ₀ − γ₀): the natural input for a plate
     /// released from rest.
@@ -250,125 +174,75 @@ pub struct FreeArgs {
 }
 
 impl SolverArgs {
-    fn grid(&self) -> GridSpec {
+    /// Applies the solver options to a run of any case.
+    fn apply<C>(&self, mut b: RunBuilder<C>) -> RunBuilder<C> {
+        b = b
+            .resolution(self.resolution)
+            .extent(self.extent)
+            .growth(self.growth)
+            .cfl(self.cfl)
+            .dt_max(self.dt_max)
+            .cc(self.cc)
+            .near_field(self.near_x, self.near_y);
+        if let Some(t) = self.thickness {
+            b = b.thickness(t);
+        }
         if self.seed_grid {
-            return GridSpec::seed();
+            b = b.seed_grid();
         }
-        GridSpec {
-            resolution: self.resolution,
-            thickness: self
-                .thickness
-                .unwrap_or(1.0 / self.resolution.max(1) as f64),
-            extent_x: self.extent,
-            extent_y: self.extent,
-            stretch: Stretch::GrowthCap(self.growth),
+        if let Some(re) = self.re {
+            b = b.re(re);
         }
-    }
-
-    fn config(
-        &self,
-        case: Case,
-        default_re: f64,
-        default_t_end: f64,
-        body: Option<BodyConfig>,
-        turns: Option<f64>,
-    ) -> RunConfig {
-        RunConfig {
-            grid: self.grid(),
-            flow: FlowParams {
-                re: self.re.unwrap_or(default_re),
-                cfl: self.cfl,
-                far_field: self.far_field.scheme_for(&case),
-                near_x: self.near_x,
-                near_y: self.near_y,
-                ..FlowParams::default()
-            },
-            body,
-            time: TimeControl {
-                t_end: self.t_end.unwrap_or(default_t_end),
-                turns,
-                dt_max: self.dt_max,
-                cc: self.cc,
-            },
-            case,
+        if let Some(scheme) = self.far_field.scheme() {
+            b = b.far_field(scheme);
         }
+        if let Some(t) = self.t_end {
+            b = b.t_end(t);
+        }
+        b
     }
 }
 
-/// The run configuration of a case subcommand, validated.
-pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
-    let cfg = match cmd {
-        Command::Static(a) => {
-            let case = Case::Static {
-                alpha: a.alpha,
-                kick: a.kick,
-            };
-            a.solver.config(case, 5000.0, 80.0, None, None)
-        }
-        Command::Forced(a) => {
-            let t_end = a.spinup + 6.0 * std::f64::consts::PI / a.rate.abs().max(1e-3);
-            let case = Case::Forced {
-                omega: a.rate,
-                spinup: a.spinup,
-            };
-            a.solver.config(case, 5000.0, t_end.min(200.0), None, None)
-        }
-        Command::Pinned(a) => {
-            let case = Case::Pinned {
-                alpha0: a.alpha0,
-                develop: a.body.develop_for(a.v0),
-                speed: a.v0,
-            };
-            coupled_config(&a.solver, &a.body, case, 60.0, a.body.turns)?
-        }
-        Command::Free(a) => {
-            let physical = a.body.physical.chord_mm.is_some();
-            let v0 = a.v0.unwrap_or(if physical { 0.0 } else { 1.0 });
-            let case = Case::Free {
-                v0,
-                gamma0: a.gamma0,
-                alpha0: a.theta0.map_or(a.alpha0, |th| th - a.gamma0),
-                develop: a.body.develop_for(v0),
-            };
-            let turns = Some(a.body.turns.unwrap_or(10.0));
-            coupled_config(&a.solver, &a.body, case, 80.0, turns)?
-        }
-        Command::Bench(_) => return Err(ArgError::NotACase("bench")),
-        Command::Sweep(_) => return Err(ArgError::NotACase("sweep")),
-    };
-    cfg.validate()?;
-    if let Some((solver, _)) = cmd.case_args() {
-        check_whole(Param::Threads, solver.threads, 0, 256)?;
+impl StaticArgs {
+    /// The validated run.
+    pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
+        let b = RunBuilder::static_plate(self.alpha).kick(self.kick);
+        Ok(self.solver.apply(b).build()?)
     }
-    Ok(cfg)
 }
 
-/// A pinned or free run: the plate from its preset and overrides or its physical description; Re
-/// from --re or the plate; a physical plate's thickness for the grid unless --thickness is given.
-fn coupled_config(
-    solver: &SolverArgs,
-    body: &BodyArgs,
-    case: Case,
-    default_t_end: f64,
-    turns: Option<f64>,
-) -> Result<RunConfig, ArgError> {
-    let resolved = body.resolve()?;
-    let re = solver.re.or(resolved.re).ok_or(ArgError::Missing {
-        flag: "--re",
-        when: "with --preset none",
-    })?;
-    let mut cfg = solver.config(case, re, default_t_end, Some(resolved.body), turns);
-    if let (None, Some(t)) = (solver.thickness, resolved.thickness) {
-        cfg.grid.thickness = t;
+impl ForcedArgs {
+    /// The validated run.
+    pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
+        let b = RunBuilder::forced(self.rate).spinup(self.spinup);
+        Ok(self.solver.apply(b).build()?)
     }
-    Ok(cfg)
 }
 
-/// What to tell the user about the plate before a run (see [`BodyArgs::notes`]).
-pub fn plate_notes(cmd: &Command, config: &RunConfig) -> Vec<String> {
-    match cmd {
-        Command::Pinned(a) => a.body.notes(config),
-        Command::Free(a) => a.body.notes(config),
-        _ => Vec::new(),
+impl PinnedArgs {
+    /// The validated run.
+    pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
+        let b = RunBuilder::pinned(self.body.plate()?)
+            .alpha0(self.alpha0)
+            .speed(self.v0)
+            .body_options(&self.body);
+        Ok(self.solver.apply(b).build()?)
+    }
+}
+
+impl FreeArgs {
+    /// The validated run.
+    pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
+        let mut b = RunBuilder::free(self.body.plate()?)
+            .gamma0(self.gamma0)
+            .body_options(&self.body);
+        b = match self.theta0 {
+            Some(theta) => b.theta0(theta),
+            None => b.alpha0(self.alpha0),
+        };
+        if let Some(v0) = self.v0 {
+            b = b.v0(v0);
+        }
+        Ok(self.solver.apply(b).build()?)
     }
 }

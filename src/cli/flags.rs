@@ -80,6 +80,7 @@ fn input_message(e: &InputError) -> String {
         InputError::Inconsistent { param, value, why } => {
             format!("{} {value} is not accepted: {why}", flag(*param))
         }
+        InputError::Missing { param, why } => format!("{} is required {why}", flag(*param)),
         InputError::MissingPlate => e.to_string(),
     }
 }

@@ -6,7 +6,7 @@ use clap::Args;
 
 use platefall_core::grid::Stretch;
 use platefall_core::sim::estimate::{estimate, DtFloor, Estimate, FACTOR_NONZERO_LIMIT};
-use platefall_core::sim::RunConfig;
+use platefall_core::sim::{RunConfig, ValidatedConfig};
 
 /// Default share of physical memory a run may take.
 const DEFAULT_MEMORY_SHARE: &str = "75%";
@@ -32,11 +32,11 @@ pub struct LimitArgs {
 /// Checks `config` against the limits; `recording` is the number of field snapshots that may be
 /// queued when a Rerun sink is open. Ok carries a warning for long runs.
 pub fn check_limits(
-    config: &RunConfig,
+    config: &ValidatedConfig,
     limits: &LimitArgs,
     recording: Option<usize>,
 ) -> anyhow::Result<Option<String>> {
-    let est = estimate(config)?;
+    let est = estimate(config);
     check_memory(config, &est, limits, recording)?;
     check_steps(config, &est, limits)?;
     let hours = est.seconds_min() / 3600.0;

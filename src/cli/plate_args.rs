@@ -1,15 +1,77 @@
 //! The plate's description on the command line (SPEC §2, §6): the card preset or non-dimensional
-//! values ([`BodyArgs`](super::args::BodyArgs)), or a plate described physically
-//! ([`PhysicalArgs`]: width, thickness, density, a named fluid, gravity), which `config::Strip`
-//! turns into Re, m*, I*, g*, m_f*.
+//! values ([`BodyArgs`]), or a plate described physically ([`PhysicalArgs`]: width, thickness,
+//! density, a named fluid, gravity), which the library's [`Plate::strip`] turns into Re, m*, I*,
+//! g*, m_f*; and the coupling and body-integrator options of the pinned and free cases.
 use clap::{Args, ValueEnum};
 
-use super::args::{AbStartArg, BodyArgs, Preset};
 use super::flags::ArgError;
-use platefall_core::body::{AbStart, Coupling, PlateProps};
-use platefall_core::config::{Fluid, PhysicalPlate, Strip};
-use platefall_core::grid::Grid;
-use platefall_core::sim::{BodyConfig, RunConfig};
+use platefall_core::body::{AbStart, Coupling};
+use platefall_core::config::{defaults, Fluid, FreeFall, PinnedPlate, Plate, RunBuilder, Strip};
+use platefall_core::sim::ValidatedConfig;
+
+/// Plate properties, the coupling and the body integrator (pinned and free cases).
+#[derive(Args, Debug, Clone)]
+#[command(next_help_heading = "Plate, coupling and release")]
+pub struct BodyArgs {
+    /// Preset giving Re, m*, I*, g*: `card` is the seed's card in sea-level air (SPEC §8; its
+    /// weight is the apparent weight, m_f* = 0) [default: card, unless the plate is described
+    /// physically].
+    #[arg(long, value_enum)]
+    pub preset: Option<Preset>,
+    /// Mass ratio m* = m/(ρc²b) (overrides the preset).
+    #[arg(long, allow_negative_numbers = true)]
+    pub mass: Option<f64>,
+    /// Inertia ratio I* = I/(ρc⁴b) (overrides the preset).
+    #[arg(long, allow_negative_numbers = true)]
+    pub inertia: Option<f64>,
+    /// Gravity g* = g c/U² (overrides the preset; ignored by `pinned`).
+    #[arg(long, allow_negative_numbers = true)]
+    pub gravity: Option<f64>,
+    /// Displaced fluid mass m_f* = ρf × volume/(ρf c² b) (t/c for a plate of thickness t): the
+    /// weight is (m* − m_f*) g* [default: 0, the weight given is the apparent weight].
+    #[arg(long, allow_negative_numbers = true)]
+    pub displaced_mass: Option<f64>,
+    /// An applied moment on the plate, by ρU²c² (counter-clockwise positive).
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub torque: f64,
+    /// How the flow's loads enter the plate's equations (`explicit` is the seed's scheme).
+    #[arg(long, value_enum, default_value_t = CouplingArg::Strong)]
+    pub coupling: CouplingArg,
+    /// Adams–Bashforth order for the plate's equations of motion, 1..=6.
+    #[arg(long, default_value_t = defaults::AB_ORDER)]
+    pub ab_order: usize,
+    /// How the Adams–Bashforth history is started at release.
+    #[arg(long, value_enum, default_value_t = AbStartArg::Ramp)]
+    pub ab_start: AbStartArg,
+    /// Hold the plate at its launch attitude for this long before release (flow development)
+    /// [default: 5, or 0 when it starts from rest].
+    #[arg(long, allow_negative_numbers = true)]
+    pub develop: Option<f64>,
+    /// Stop after this many net turns after release, or at --t-end, whichever comes first
+    /// [default: 10 for free, none for pinned].
+    #[arg(long, allow_negative_numbers = true)]
+    pub turns: Option<f64>,
+    #[command(flatten)]
+    pub physical: PhysicalArgs,
+}
+
+/// `--preset`.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
+pub enum Preset {
+    /// The seed's card: chord 3 in, span 8 in, 7.02e-3 lbf, U = 3 ft/s in sea-level air.
+    Card,
+    /// No preset: give --re, --mass, --inertia and --gravity.
+    None,
+}
+
+/// `--ab-start`.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
+pub enum AbStartArg {
+    /// Raise the order 1, 2, … over the first steps.
+    Ramp,
+    /// The seed's start: extrapolate the history linearly backwards.
+    Extrapolate,
+}
 
 /// The three inputs that describe a plate physically; each of the physical options needs them all.
 const PLATE: [&str; 3] = ["chord_mm", "thickness_mm", "plate_density"];
@@ -110,96 +172,94 @@ impl PhysicalArgs {
     }
 }
 
-/// A plate resolved from the command line: its description, the Reynolds number it implies (if
-/// any) and, for a physical plate, its thickness in chords.
-pub struct ResolvedBody {
-    pub body: BodyConfig,
-    pub re: Option<f64>,
-    pub thickness: Option<f64>,
+/// The builder methods the body options set, for both coupled cases.
+pub trait CoupledBuilder: Sized {
+    /// Applies the options of the plate's release, coupling and integrator.
+    fn body_options(self, args: &BodyArgs) -> Self;
 }
+
+macro_rules! coupled_builder {
+    ($case:ty) => {
+        impl CoupledBuilder for RunBuilder<$case> {
+            fn body_options(self, a: &BodyArgs) -> Self {
+                let mut b = self
+                    .coupling(match a.coupling {
+                        CouplingArg::Strong => Coupling::Strong,
+                        CouplingArg::Explicit => Coupling::Explicit,
+                    })
+                    .ab_order(a.ab_order)
+                    .ab_start(match a.ab_start {
+                        AbStartArg::Ramp => AbStart::Ramp,
+                        AbStartArg::Extrapolate => AbStart::Extrapolate,
+                    });
+                if let Some(d) = a.develop {
+                    b = b.develop(d);
+                }
+                if let Some(n) = a.turns {
+                    b = b.turns(n);
+                }
+                b
+            }
+        }
+    };
+}
+coupled_builder!(PinnedPlate);
+coupled_builder!(FreeFall);
 
 impl BodyArgs {
     /// The plate: physical, or the preset's values overridden by explicit ones.
-    pub fn resolve(&self) -> Result<ResolvedBody, ArgError> {
-        if let Some(strip) = self.physical.strip() {
-            strip.validate()?;
-            let props = PlateProps {
-                torque: self.torque,
-                ..strip.props()
-            };
-            return Ok(ResolvedBody {
-                body: self.body_config(Some(label(&strip)), Some(strip.scales()), props),
-                re: Some(strip.reynolds()),
-                thickness: Some(strip.aspect()),
-            });
-        }
-        let card = PhysicalPlate::card();
-        let preset = self.preset.unwrap_or(Preset::Card) == Preset::Card;
-        let base = preset.then(|| card.props());
-        let pick = |flag: &'static str, given: Option<f64>, from: Option<f64>| {
-            given.or(from).ok_or(ArgError::Missing {
-                flag,
-                when: "with --preset none",
-            })
+    pub fn plate(&self) -> Result<Plate, ArgError> {
+        let plate = match self.physical.strip() {
+            Some(strip) => Plate::strip(&strip)?,
+            None if self.preset.unwrap_or(Preset::Card) == Preset::Card => {
+                let mut card = Plate::card();
+                if let Some(m) = self.mass {
+                    card = card.mass(m);
+                }
+                if let Some(i) = self.inertia {
+                    card = card.inertia(i);
+                }
+                if let Some(g) = self.gravity {
+                    card = card.gravity(g);
+                }
+                card
+            }
+            None => {
+                let need = |flag: &'static str, given: Option<f64>| {
+                    given.ok_or(ArgError::Missing {
+                        flag,
+                        when: "with --preset none",
+                    })
+                };
+                Plate::nondimensional(
+                    need("--mass", self.mass)?,
+                    need("--inertia", self.inertia)?,
+                    need("--gravity", self.gravity)?,
+                )
+            }
         };
-        let props = PlateProps {
-            displaced: self.displaced_mass.unwrap_or(0.0),
-            torque: self.torque,
-            ..PlateProps::new(
-                pick("--mass", self.mass, base.map(|b| b.mass))?,
-                pick("--inertia", self.inertia, base.map(|b| b.inertia))?,
-                pick("--gravity", self.gravity, base.map(|b| b.gravity))?,
-            )
+        let plate = match self.displaced_mass {
+            Some(m) => plate.displaced(m),
+            None => plate,
         };
-        Ok(ResolvedBody {
-            body: self.body_config(
-                preset.then(|| "card".to_string()),
-                preset.then(|| card.scales()),
-                props,
-            ),
-            re: preset.then(|| card.reynolds()),
-            thickness: None,
-        })
-    }
-
-    fn body_config(
-        &self,
-        preset: Option<String>,
-        scales: Option<platefall_core::sim::ReferenceScales>,
-        props: PlateProps,
-    ) -> BodyConfig {
-        BodyConfig {
-            preset,
-            scales,
-            props,
-            ab_order: self.ab_order,
-            ab_start: match self.ab_start {
-                AbStartArg::Ramp => AbStart::Ramp,
-                AbStartArg::Extrapolate => AbStart::Extrapolate,
-            },
-            coupling: match self.coupling {
-                CouplingArg::Strong => Coupling::Strong,
-                CouplingArg::Explicit => Coupling::Explicit,
-            },
-        }
+        Ok(plate.torque(self.torque))
     }
 
     /// What to tell the user before the run: a physical plate's derivation of its parameters and
     /// how the grid draws its thickness; the explicit-coupling advice for a light plate.
-    pub fn notes(&self, config: &RunConfig) -> Vec<String> {
+    pub fn notes(&self, config: &ValidatedConfig) -> Vec<String> {
         let mut lines = Vec::new();
         if let Some(strip) = self.physical.strip() {
             lines.extend(strip.derivation());
-            if let Ok(grid) = Grid::new(&config.grid) {
-                lines.push(format!(
-                    "grid: the plate is drawn {} cell(s) thick = {:.5} c at N = {} \
-                     (t/c = {:.5}, rounded to whole cells, at least one); m*, m_f*, I* use the true t",
-                    (grid.thickness / grid.h).round(),
-                    grid.thickness,
-                    grid.spec.resolution,
-                    strip.aspect()
-                ));
-            }
+            let grid = config.grid();
+            lines.push(format!(
+                "grid: the plate is drawn {} cell(s) thick = {:.5} c at N = {} \
+                 (t/c = {:.5}, rounded to whole cells, at least one); m*, m_f*, I* use the true t",
+                (grid.thickness / grid.h).round(),
+                grid.thickness,
+                grid.spec.resolution,
+                strip.aspect()
+            ));
         }
         if let Some(b) = config
             .body
@@ -214,15 +274,4 @@ impl BodyArgs {
         }
         lines
     }
-}
-
-/// A one-line name for a physical plate (the run's title).
-fn label(s: &Strip) -> String {
-    format!(
-        "{} × {} mm plate of {} kg/m³ in {}",
-        s.chord * 1e3,
-        s.thickness * 1e3,
-        s.density,
-        s.fluid.name
-    )
 }

@@ -4,6 +4,7 @@
 use std::net::{IpAddr, SocketAddr, TcpListener};
 use std::path::{Path, PathBuf};
 
+use platefall_core::sim::CaseKind;
 use platefall_post::{FieldWindow, StreamFrame};
 use platefall_record::files::{check_outputs, OutputPath};
 use platefall_record::options::{
@@ -169,7 +170,7 @@ pub enum OptionsError {
 
 impl RecordArgs {
     /// The default recording path for a case: `recordings/<case>.rrd`.
-    pub fn default_save_path(case: &str) -> PathBuf {
+    pub fn default_save_path(case: CaseKind) -> PathBuf {
         Path::new("recordings").join(format!("{case}.rrd"))
     }
 
@@ -178,8 +179,8 @@ impl RecordArgs {
         !self.no_save || self.serve || self.connect.is_some() || self.spawn
     }
 
-    /// Validates the options for a run of `case` that ends at convective time `t_end`; `others`
-    /// are the run's other outputs (e.g. `("--summary", path)`).
+    /// Validates the options for a run of `case`; `others` are the run's other outputs (e.g.
+    /// `("--summary", path)`).
     ///
     /// Checks everything that can be checked before the run starts: numeric ranges, the --connect
     /// URL, the --serve port (free?), `rerun` on PATH for --spawn, and that every output path is
@@ -187,8 +188,7 @@ impl RecordArgs {
     /// never any other directory).
     pub fn resolve(
         &self,
-        case: &str,
-        t_end: f64,
+        case: CaseKind,
         others: &[(&'static str, &Path)],
     ) -> Result<RecordOptions, OptionsError> {
         let fields = self.field_options()?;
@@ -218,7 +218,6 @@ impl RecordArgs {
             view: fields.view,
             csv,
             progress,
-            t_end,
             ..RecordOptions::default()
         })
     }
@@ -265,7 +264,6 @@ impl RecordArgs {
             view: ViewOptions {
                 wake_window,
                 wake_res,
-                plot_ranges: None,
             },
         })
     }
@@ -325,7 +323,7 @@ impl RecordArgs {
     }
 
     /// The .rrd path: --save, or `recordings/<case>.rrd`, or none with --no-save.
-    fn save_path(&self, case: &str) -> Result<Option<PathBuf>, OptionsError> {
+    fn save_path(&self, case: CaseKind) -> Result<Option<PathBuf>, OptionsError> {
         if self.no_save {
             return Ok(None);
         }
@@ -468,13 +466,12 @@ mod tests {
         std::fs::create_dir_all(&dir).unwrap();
         let save = dir.join("a.rrd");
         let o = args(&["--save", save.to_str().unwrap()])
-            .resolve("free", 60.0, &[])
+            .resolve(CaseKind::Free, &[])
             .unwrap();
         assert_eq!(o.save.as_deref(), Some(save.as_path()));
         assert_eq!(o.field_every, DEFAULT_FIELD_EVERY);
         assert_eq!(o.streamlines_frame, StreamFrame::Translating);
         assert_eq!(o.field_window, FieldWindow::default());
-        assert_eq!(o.t_end, 60.0);
         let _ = std::fs::remove_dir_all(&dir);
     }
 
@@ -508,7 +505,7 @@ mod tests {
             if !argv.contains(&"--save") {
                 a.no_save = true;
             }
-            let e = a.resolve("free", 1.0, &[]).unwrap_err().to_string();
+            let e = a.resolve(CaseKind::Free, &[]).unwrap_err().to_string();
             assert!(e.contains(expect), "{argv:?}: {e}");
             assert!(!e.contains('\n'), "one line: {e}");
         }
@@ -517,7 +514,7 @@ mod tests {
     #[test]
     fn small_sets_the_bug_report_setting_and_explicit_flags_win() {
         let o = args(&["--no-save", "--small"])
-            .resolve("free", 1.0, &[])
+            .resolve(CaseKind::Free, &[])
             .unwrap();
         assert_eq!((o.field_every, o.field_res), (SMALL_FIELD_EVERY, SMALL_RES));
         assert_eq!(o.view.wake_res, SMALL_RES);
@@ -530,14 +527,14 @@ mod tests {
             "--wake-res",
             "96",
         ])
-        .resolve("free", 1.0, &[])
+        .resolve(CaseKind::Free, &[])
         .unwrap();
         assert_eq!(
             (o.field_every, o.field_res, o.view.wake_res),
             (0.5, 200, 96)
         );
         let o = args(&["--no-save", "--wake-window", "-6,1.5,-2,3"])
-            .resolve("static", 1.0, &[])
+            .resolve(CaseKind::Static, &[])
             .unwrap();
         let w = o.view.wake_window.unwrap();
         assert_eq!([w.x0, w.x1, w.y0, w.y1], [-6.0, 1.5, -2.0, 3.0]);
@@ -551,7 +548,7 @@ mod tests {
         let port = l.local_addr().unwrap().port().to_string();
         let mut a = args(&["--serve", "--port", &port]);
         a.no_save = true;
-        let e = a.resolve("free", 1.0, &[]).unwrap_err().to_string();
+        let e = a.resolve(CaseKind::Free, &[]).unwrap_err().to_string();
         assert!(e.starts_with(&format!("--port {port}")), "{e}");
     }
 
@@ -564,12 +561,12 @@ mod tests {
             (&["--no-save", "--spawn"][..], "--spawn"),
         ] {
             let e = args(argv)
-                .resolve("free", 1.0, &[])
+                .resolve(CaseKind::Free, &[])
                 .unwrap_err()
                 .to_string();
             assert!(e.starts_with(flag) && e.contains("viewer"), "{argv:?}: {e}");
         }
-        let o = args(&["--no-save"]).resolve("free", 1.0, &[]).unwrap();
+        let o = args(&["--no-save"]).resolve(CaseKind::Free, &[]).unwrap();
         assert!(!o.has_rerun_sink());
     }
 }

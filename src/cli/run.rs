@@ -1,20 +1,18 @@
 //! Running one case from the command line: validate everything (values, paths, resource
 //! limits), start the solver and the logger threads, finalise every output, report, and exit
-//! with a code that means one thing (`cli::EXIT_CODES`): 0 completed; 2 bad input (nothing is
-//! run or written); 3 diverged; 4 an output could not be written; 130 interrupted.
+//! with a code that means one thing ([`Exit`]).
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 use std::time::Instant;
 
-use super::args::run_config;
+use super::command::Command;
+use super::config::{plate_notes, run_config};
 use super::limits::check_limits;
 use super::signals::{Interrupts, Phase};
-use super::Command;
+use crate::exit::Exit;
 use platefall_core::sim::{
-    FieldSnapshot, Observer, RunConfig, RunRecord, RunStatus, Simulation, StepSample,
+    FieldSnapshot, Observer, RunRecord, RunStatus, Simulation, StepSample, ValidatedConfig,
 };
 use platefall_post::report::report;
 use platefall_post::summary::{summarize, Summary};
@@ -24,7 +22,7 @@ use platefall_record::{Logger, LoggerReport, RecordOptions};
 
 /// A case, validated and ready to run.
 struct Prepared {
-    config: RunConfig,
+    config: ValidatedConfig,
     opts: RecordOptions,
     summary_path: Option<PathBuf>,
     threads: usize,
@@ -33,20 +31,21 @@ struct Prepared {
 /// Runs a case subcommand to its end; the exit code says how it ended. An `Err` means nothing
 /// was run (bad input; or, for an [`OutputError`](platefall_record::output::OutputError), an
 /// output that could not even be created).
-pub fn run_case(cmd: &Command) -> anyhow::Result<ExitCode> {
+pub fn run_case(cmd: &Command) -> anyhow::Result<Exit> {
     let p = prepare(cmd)?;
     let interrupts = Interrupts::install()?;
-    let mut sim = Simulation::new(p.config.clone())?;
-    let mut logger = platefall_record::spawn_logger(p.opts.clone(), run_info(&p.config, &sim))?;
-    let pool = super::threads::pool(p.threads)?;
+    let info = RunInfo::new(&p.config, command_line(), version());
+    let mut sim = Simulation::new(p.config)?;
+    let mut logger = platefall_record::spawn_logger(p.opts.clone(), info)?;
+    let pool = crate::pool::pool(p.threads)?;
 
     let (mut rec, wall_seconds, lost) = solve(&mut sim, &mut logger, interrupts.stop(), &pool);
     if let Some(why) = lost {
         rec.status = RunStatus::OutputFailed(why);
     }
     interrupts.set_phase(Phase::Finalising);
-    let summary = summarize(&p.config, &rec, wall_seconds);
-    let text = report(&p.config, &summary);
+    let summary = summarize(sim.config(), &rec, wall_seconds);
+    let text = report(sim.config(), &summary);
     // (Cannot fail for a plain struct; never leave the logger unfinished over it.)
     let summary_json = serde_json::to_string_pretty(&summary)
         .unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"));
@@ -83,16 +82,8 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
         .iter()
         .map(|p| ("--summary", p.as_path()))
         .collect();
-    // A run that stops after a number of turns has no known end time: show no ETA rather than a
-    // wrong one.
-    let progress_end = if config.time.turns.is_some() {
-        f64::NAN
-    } else {
-        config.time.t_end
-    };
-    let mut opts = record_args.resolve(config.case.name(), progress_end, &others)?;
-    opts.view.plot_ranges = Some(platefall_post::PlotRanges::for_config(&config));
-    for line in super::args::plate_notes(cmd, &config) {
+    let opts = record_args.resolve(config.case.kind(), &others)?;
+    for line in plate_notes(cmd, &config) {
         eprintln!("{line}");
     }
     Ok(Prepared {
@@ -135,17 +126,9 @@ fn print_report(text: &str, log_report: Option<&LoggerReport>) {
     std::io::stdout().flush().ok();
 }
 
-/// What the recording needs to know about the run before it starts.
-fn run_info(config: &RunConfig, sim: &Simulation) -> RunInfo {
-    RunInfo {
-        case: config.case.name().to_string(),
-        title: config.title(),
-        config_json: serde_json::to_string_pretty(config).unwrap_or_default(),
-        command_line: command_line(),
-        version: format!("platefall {}", env!("CARGO_PKG_VERSION")),
-        thickness: sim.flow.grid.thickness,
-        grid: Arc::new(sim.flow.grid.geometry()),
-    }
+/// The program and its version, for the recording.
+fn version() -> String {
+    format!("platefall {}", env!("CARGO_PKG_VERSION"))
 }
 
 /// Runs the solver inside the worker pool (this thread waits), timing it. The third value is the
@@ -169,10 +152,12 @@ fn solve(
 }
 
 /// The exit code of a finished run, with its one-line messages on stderr.
-fn exit_code(status: &RunStatus, summary: &Summary, failures: &[String]) -> ExitCode {
+fn exit_code(status: &RunStatus, summary: &Summary, failures: &[String]) -> Exit {
     if !failures.is_empty() {
         let stopped = match status {
-            RunStatus::OutputFailed(_) => format!("; the run stopped at t = {:.3}", summary.t_end),
+            RunStatus::OutputFailed(_) => {
+                format!("; the run stopped at t = {:.3}", summary.t_reached)
+            }
             _ => String::new(),
         };
         eprintln!(
@@ -181,25 +166,20 @@ fn exit_code(status: &RunStatus, summary: &Summary, failures: &[String]) -> Exit
         );
     }
     match status {
-        RunStatus::Interrupted => {
-            eprintln!(
-                "interrupted: the outputs hold the run up to t = {:.3} and say so",
-                summary.t_end
-            );
-            ExitCode::from(130)
+        RunStatus::Interrupted => eprintln!(
+            "interrupted: the outputs hold the run up to t = {:.3} and say so",
+            summary.t_reached
+        ),
+        RunStatus::OutputFailed(msg) if failures.is_empty() => eprintln!("error: {msg}"),
+        RunStatus::Diverged(e) if failures.is_empty() => {
+            eprintln!("error: {e}; try a smaller --cfl or a finer --resolution")
         }
-        RunStatus::OutputFailed(msg) => {
-            if failures.is_empty() {
-                eprintln!("error: {msg}");
-            }
-            ExitCode::from(4)
-        }
-        _ if !failures.is_empty() => ExitCode::from(4),
-        RunStatus::Diverged(msg) => {
-            eprintln!("error: {msg}; try a smaller --cfl or a finer --resolution");
-            ExitCode::from(3)
-        }
-        RunStatus::Completed => ExitCode::SUCCESS,
+        _ => {}
+    }
+    match status {
+        RunStatus::Interrupted | RunStatus::OutputFailed(_) => Exit::of_status(status),
+        _ if !failures.is_empty() => Exit::OutputFailed,
+        _ => Exit::of_status(status),
     }
 }
 

@@ -39,6 +39,7 @@ impl Interrupts {
     /// Installs the handler (once per process).
     pub fn install() -> anyhow::Result<Interrupts> {
         let state = Arc::new(State::default());
+        state.phase.store(Phase::Running as u8, Ordering::SeqCst);
         let s = state.clone();
         ctrlc::set_handler(move || on_interrupt(&s)).context("installing the Ctrl-C handler")?;
         Ok(Interrupts(state))

@@ -1,8 +1,8 @@
 //! A plan's cases: the full grid of the `[grid]` options (first option outermost) times the
 //! `[zip]` group (innermost), each with a stable id and its own argument vector, all checked with
 //! the command line's own validation before anything runs.
-use super::plan::{CaseSpec, Plan};
-use super::validate::{summary_keys, validate_case};
+use super::options::{summary_keys, CaseCommands};
+use super::plan::{plan_err, CaseSpec, Plan, PlanError};
 use super::values::Value;
 
 /// Most cases one plan may hold.
@@ -11,15 +11,6 @@ pub const MAX_CASES: usize = 100_000;
 const MAX_ID_PARAMS: usize = 120;
 
 impl Plan {
-    /// Every swept option's name, grid first.
-    pub fn swept_names(&self) -> Vec<String> {
-        self.grid
-            .iter()
-            .chain(&self.zip)
-            .map(|a| a.name.clone())
-            .collect()
-    }
-
     /// Number of cases.
     pub fn case_count(&self) -> usize {
         let grid: usize = self.grid.iter().map(|a| a.values.len()).product();
@@ -57,7 +48,7 @@ impl Plan {
             tail.truncate(cut.unwrap_or(0));
         }
         let id = format!("{index:0width$}{tail}");
-        let mut args = vec![self.case.clone()];
+        let mut args = vec![self.case.name().to_string()];
         for (name, v) in self.fixed.iter().chain(params.iter()) {
             match v {
                 Value::Bool(true) => args.push(format!("--{name}")),
@@ -82,23 +73,26 @@ impl Plan {
 
     /// All cases, each checked as the command line would check it, and the diagram's value key
     /// checked against the case's summary keys.
-    pub fn checked_cases(&self) -> Result<Vec<CaseSpec>, String> {
+    pub fn checked_cases(&self, commands: &dyn CaseCommands) -> Result<Vec<CaseSpec>, PlanError> {
         let n = self.case_count();
         if n > MAX_CASES {
-            return Err(format!(
+            return Err(plan_err!(
                 "{n} cases: accepted at most {MAX_CASES} in one plan"
             ));
         }
         let cases = self.cases();
+        let mut first = None;
         for c in &cases {
-            validate_case(&c.args)
-                .map_err(|e| format!("case {}: {e} (options: {})", c.id, c.args[1..].join(" ")))?;
+            let config = commands.config(&c.args).map_err(|e| {
+                plan_err!("case {}: {e} (options: {})", c.id, c.args[1..].join(" "))
+            })?;
+            first.get_or_insert(config);
         }
-        if let Some(first) = cases.first() {
-            let keys = summary_keys(&first.args)?;
+        if let Some(config) = first {
+            let keys = summary_keys(&config)?;
             let key = &self.diagram.value;
             if !keys.iter().any(|k| k == key) {
-                return Err(format!(
+                return Err(plan_err!(
                     "[diagram] value = \"{key}\" is not a summary key of `{}`: accepted {}",
                     self.case,
                     keys.join(", ")

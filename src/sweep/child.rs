@@ -2,15 +2,32 @@
 //! `status.json` (attempt, host, start, end, exit code, the last error line) and whether it is done.
 use std::fs::OpenOptions;
 use std::io::{Read, Seek, SeekFrom, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Child, Command, ExitStatus, Stdio};
 use std::time::{Instant, SystemTime};
 
 use serde::{Deserialize, Serialize};
 
-use super::fsutil::{hostname, unix_seconds, utc, write_atomic};
+use super::clock::{hostname, unix_seconds, utc};
+use super::failure::Failure;
 use super::layout::Layout;
 use super::plan::CaseSpec;
+use platefall_core::sim::StatusKind;
+use platefall_record::output::{write_atomically, OutputError};
+
+/// This executable, for the cases' child processes and the Slurm script.
+pub(crate) fn this_exe() -> Result<PathBuf, Failure> {
+    std::env::current_exe()
+        .map_err(|e| Failure::output(format!("cannot find this executable's path: {e}")))
+}
+
+/// Writes a case's `status.json` atomically.
+fn write_status(layout: &Layout, id: &str, status: &CaseStatus) -> Result<(), OutputError> {
+    let path = layout.status(id);
+    let bytes = serde_json::to_vec_pretty(status)
+        .map_err(|e| OutputError::new("status.json", &path, e.to_string()))?;
+    write_atomically("status.json", &path, &bytes).map(|_| ())
+}
 
 /// What `status.json` says about a case's last attempt.
 #[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
@@ -44,18 +61,18 @@ pub fn read_status(layout: &Layout, id: &str) -> Option<CaseStatus> {
 }
 
 /// The `status` of a case's summary, if the summary exists at its final name.
-pub fn summary_status(layout: &Layout, id: &str) -> Option<String> {
+pub fn summary_status(layout: &Layout, id: &str) -> Option<StatusKind> {
     let text = std::fs::read_to_string(layout.summary(id)).ok()?;
     let v: serde_json::Value = serde_json::from_str(&text).ok()?;
-    v.get("status")?.as_str().map(str::to_string)
+    serde_json::from_value(v.get("status")?.clone()).ok()
 }
 
 /// A case is done when its summary says completed or diverged (a finished failure); an
 /// interrupted or missing summary means it runs again.
 pub fn is_done(layout: &Layout, id: &str) -> bool {
     matches!(
-        summary_status(layout, id).as_deref(),
-        Some("completed" | "diverged")
+        summary_status(layout, id),
+        Some(StatusKind::Completed | StatusKind::Diverged)
     )
 }
 
@@ -130,7 +147,7 @@ pub fn launch(
         started_unix: unix_seconds(now),
         ..Default::default()
     };
-    write_atomic(&layout.status(id), &serde_json::to_vec_pretty(&status)?)?;
+    write_status(layout, id, &status).map_err(std::io::Error::other)?;
     Ok(Running {
         case: case.clone(),
         child,
@@ -153,9 +170,7 @@ pub fn launch_failed(layout: &Layout, case: &CaseSpec, err: &std::io::Error) -> 
         message: format!("could not start: {err}"),
         ..Default::default()
     };
-    if let Ok(bytes) = serde_json::to_vec_pretty(&status) {
-        let _ = write_atomic(&layout.status(&case.id), &bytes);
-    }
+    let _ = write_status(layout, &case.id, &status);
     status
 }
 
@@ -210,13 +225,8 @@ pub fn finish(layout: &Layout, mut r: Running, exit: ExitStatus) -> CaseStatus {
         None if exit.success() => String::new(),
         None => last_error_line(&layout.log(&id), r.log_start),
     };
-    if let Ok(bytes) = serde_json::to_vec_pretty(&r.status) {
-        if let Err(e) = write_atomic(&layout.status(&id), &bytes) {
-            eprintln!(
-                "warning: cannot write {}: {e}",
-                layout.status(&id).display()
-            );
-        }
+    if let Err(e) = write_status(layout, &id, &r.status) {
+        eprintln!("warning: {e}");
     }
     r.status
 }

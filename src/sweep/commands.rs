@@ -1,60 +1,67 @@
 //! The entry points of `platefall sweep`: a local sweep, `--dry-run`, `--slurm`, `collect` and
 //! `run-case`.
 use std::path::{Path, PathBuf};
-use std::process::ExitCode;
 use std::sync::atomic::Ordering;
 use std::time::Duration;
 
-use super::args::{SweepAction, SweepArgs};
-use super::child::{finish, interrupt, is_done, launch};
+use super::child::{finish, interrupt, is_done, launch, this_exe};
+use super::diagram::diagram_data;
+use super::failure::Failure;
 use super::layout::{difference, lock, prepare, read_manifest, Layout, Manifest};
+use super::options::CaseCommands;
 use super::plan::{self, CaseSpec, Plan};
-use super::progress::Progress;
-use super::results::{gather, not_completed, tally, write_tables};
+use super::progress::{Progress, ProgressMode};
+use super::results::{gather, not_completed, outcome, tally, write_tables};
 use super::runner::{interrupt_counter, run_pool};
-use super::{Failure, EXIT_INCOMPLETE, EXIT_INTERRUPTED};
+use super::slurm::submit_script;
+use super::SweepRequest;
+use crate::exit::Exit;
+use platefall_post::phase::CaseState;
 
-/// Runs `platefall sweep ...` and returns the process exit code.
-pub fn main(args: &SweepArgs) -> ExitCode {
-    match dispatch(args) {
-        Ok(code) => ExitCode::from(code),
+/// Runs `platefall sweep ...`; the exit code says how it ended (errors are printed here).
+pub(crate) fn main(request: &SweepRequest, commands: &dyn CaseCommands) -> Exit {
+    match dispatch(request, commands) {
+        Ok(code) => code,
         Err(f) => {
             eprintln!("error: {}", f.message);
-            ExitCode::from(f.code)
+            f.exit
         }
     }
 }
 
-fn dispatch(args: &SweepArgs) -> Result<u8, Failure> {
-    match &args.action {
-        Some(SweepAction::Collect { dir }) => collect(dir),
-        Some(SweepAction::RunCase { dir, index }) => run_case(dir, *index),
-        None => {
-            let path = args
-                .plan
-                .as_deref()
-                .ok_or_else(|| Failure::input("give a plan file: platefall sweep PLAN.toml"))?;
-            let plan = plan::load(path).map_err(Failure::input)?;
+fn dispatch(request: &SweepRequest, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
+    match request {
+        SweepRequest::Collect { dir } => collect(dir, commands),
+        SweepRequest::RunCase { dir, index } => run_case(dir, *index, commands),
+        SweepRequest::Run {
+            plan: path,
+            jobs,
+            dry_run: dry,
+            output,
+            progress,
+            slurm,
+        } => {
+            let plan = plan::load(path, commands)?;
             let cases = plan
-                .checked_cases()
+                .checked_cases(commands)
                 .map_err(|e| Failure::input(format!("plan {}: {e}", path.display())))?;
-            let layout = Layout::new(&output_dir(args, &plan, path)?);
-            if args.dry_run {
+            let layout = Layout::new(&output_dir(output.as_deref(), &plan, path)?);
+            if *dry {
                 dry_run(&layout, &plan, &cases);
-                Ok(0)
-            } else if args.slurm {
-                super::slurm::submit_script(&layout, &plan, &cases, &args.resources)
+                Ok(Exit::Completed)
+            } else if let Some(resources) = slurm {
+                submit_script(&layout, &plan, &cases, resources)
             } else {
-                local(args, &layout, &plan, &cases)
+                local(*jobs, *progress, &layout, &plan, &cases)
             }
         }
     }
 }
 
 /// `--output`, else the plan's `output`.
-fn output_dir(args: &SweepArgs, plan: &Plan, path: &Path) -> Result<PathBuf, Failure> {
-    args.output
-        .clone()
+fn output_dir(output: Option<&Path>, plan: &Plan, path: &Path) -> Result<PathBuf, Failure> {
+    output
+        .map(Path::to_path_buf)
         .or_else(|| plan.output.clone())
         .ok_or_else(|| {
             Failure::input(format!(
@@ -62,12 +69,6 @@ fn output_dir(args: &SweepArgs, plan: &Plan, path: &Path) -> Result<PathBuf, Fai
                 path.display()
             ))
         })
-}
-
-/// This executable, for the cases' child processes and the Slurm script.
-pub fn this_exe() -> Result<PathBuf, Failure> {
-    std::env::current_exe()
-        .map_err(|e| Failure::output(format!("cannot find this executable's path: {e}")))
 }
 
 /// `--dry-run`: the cases, which are done, and the command each would run.
@@ -91,14 +92,15 @@ fn dry_run(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) {
     }
 }
 
-/// Makes (or checks) the directory and takes its lock.
+/// Makes (or checks) the directory and takes its lock. A directory that cannot be made is bad
+/// input, as for a run's outputs: nothing has run yet.
 fn open_dir(
     layout: &Layout,
     plan: &Plan,
     cases: &[CaseSpec],
 ) -> Result<super::layout::DirLock, Failure> {
     std::fs::create_dir_all(&layout.dir)
-        .map_err(|e| Failure::output(format!("cannot create {}: {e}", layout.dir.display())))?;
+        .map_err(|e| Failure::input(format!("cannot create {}: {e}", layout.dir.display())))?;
     let guard = lock(layout)?;
     prepare(layout, plan, cases)?;
     Ok(guard)
@@ -106,12 +108,13 @@ fn open_dir(
 
 /// A local sweep: the cases not yet done, `--jobs` at once, then the merged results.
 fn local(
-    args: &SweepArgs,
+    jobs: Option<usize>,
+    progress_mode: ProgressMode,
     layout: &Layout,
     plan: &Plan,
     cases: &[CaseSpec],
-) -> Result<u8, Failure> {
-    let jobs = match args.jobs {
+) -> Result<Exit, Failure> {
+    let jobs = match jobs {
         Some(0) => {
             return Err(Failure::input(
                 "--jobs 0 is out of range: accepted 1 or more",
@@ -138,7 +141,7 @@ fn local(
         jobs.min(todo.len().max(1))
     );
     let presses = interrupt_counter()?;
-    let mut progress = Progress::new(args.progress, cases.len(), done);
+    let mut progress = Progress::new(progress_mode, cases.len(), done);
     let recording = plan.outputs.recording;
     let interrupted = run_pool(
         &exe,
@@ -151,18 +154,17 @@ fn local(
     );
     progress.finish();
     let code = merge(layout, plan, cases)?;
-    Ok(if interrupted { EXIT_INTERRUPTED } else { code })
+    Ok(if interrupted { Exit::Interrupted } else { code })
 }
 
 /// Writes the merged results and the phase diagram, prints the tally and what did not
-/// complete; 0 if every case completed, else 3.
-pub fn merge(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<u8, Failure> {
+/// complete; [`Exit::Completed`] if every case completed, else [`Exit::Diverged`].
+fn merge(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<Exit, Failure> {
     let rows = gather(layout, cases);
     write_tables(layout, &rows)?;
-    let data = super::diagram::DiagramData::new(plan, &rows);
+    let data = diagram_data(plan, &rows);
     super::plot::write_figures(layout, &data)?;
-    #[cfg(feature = "viewer")]
-    super::recording::write_recording(layout, &data)?;
+    let rrd = platefall_record::viewer::write_phase_recording(&layout.output("phase.rrd"), &data)?;
     println!("{}", tally(&rows));
     let missing = not_completed(&rows);
     if !missing.is_empty() {
@@ -174,21 +176,20 @@ pub fn merge(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<u8, Fai
     println!(
         "results: {}/results.csv, results.json, phase.png, phase.svg{}",
         layout.dir.display(),
-        if cfg!(feature = "viewer") {
-            ", phase.rrd"
-        } else {
-            ""
-        }
+        if rrd.is_some() { ", phase.rrd" } else { "" }
     );
     Ok(if missing.is_empty() {
-        0
+        Exit::Completed
     } else {
-        EXIT_INCOMPLETE
+        Exit::Diverged
     })
 }
 
 /// The plan and cases of a prepared directory (its own `plan.toml`, checked against `sweep.json`).
-fn open_prepared(dir: &Path) -> Result<(Layout, Plan, Manifest), Failure> {
+fn open_prepared(
+    dir: &Path,
+    commands: &dyn CaseCommands,
+) -> Result<(Layout, Plan, Manifest), Failure> {
     let layout = Layout::new(dir);
     let manifest = read_manifest(&layout)?.ok_or_else(|| {
         Failure::input(format!(
@@ -196,7 +197,7 @@ fn open_prepared(dir: &Path) -> Result<(Layout, Plan, Manifest), Failure> {
             layout.dir.display()
         ))
     })?;
-    let mut plan = plan::load(&layout.plan()).map_err(Failure::input)?;
+    let mut plan = plan::load(&layout.plan(), commands)?;
     if let Some(why) = difference(&manifest, &Manifest::of(&plan, &plan.cases())) {
         return Err(Failure::input(format!(
             "{}: plan.toml does not match sweep.json ({why}); restore it or rerun the sweep",
@@ -210,15 +211,15 @@ fn open_prepared(dir: &Path) -> Result<(Layout, Plan, Manifest), Failure> {
 }
 
 /// `collect DIR`: merge whatever has finished.
-fn collect(dir: &Path) -> Result<u8, Failure> {
-    let (layout, plan, manifest) = open_prepared(dir)?;
+fn collect(dir: &Path, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
+    let (layout, plan, manifest) = open_prepared(dir, commands)?;
     merge(&layout, &plan, &manifest.cases)
 }
 
 /// `run-case DIR INDEX`: one case of a prepared directory, as a child process; exits with the
 /// case's exit code.
-fn run_case(dir: &Path, index: usize) -> Result<u8, Failure> {
-    let (layout, _plan, manifest) = open_prepared(dir)?;
+fn run_case(dir: &Path, index: usize, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
+    let (layout, _plan, manifest) = open_prepared(dir, commands)?;
     let case = manifest.cases.get(index).ok_or_else(|| {
         Failure::input(format!(
             "case index {index} is out of range: accepted 0..={}",
@@ -227,7 +228,7 @@ fn run_case(dir: &Path, index: usize) -> Result<u8, Failure> {
     })?;
     if is_done(&layout, &case.id) {
         println!("{}: already done", case.id);
-        return Ok(0);
+        return Ok(Exit::Completed);
     }
     let presses = interrupt_counter()?;
     let exe = this_exe()?;
@@ -253,7 +254,21 @@ fn run_case(dir: &Path, index: usize) -> Result<u8, Failure> {
         std::thread::sleep(Duration::from_millis(100));
     };
     let status = finish(&layout, running, exit);
-    let state = super::results::outcome(&layout, &case.id, Some(&status));
+    let state = outcome(&layout, &case.id, Some(&status));
     println!("{}: {state} {}", case.id, status.message);
-    Ok(status.exit_code.map_or(1, |c| c.clamp(0, 255) as u8))
+    Ok(status
+        .exit_code
+        .and_then(Exit::from_code)
+        .unwrap_or(case_exit(state)))
+}
+
+/// The exit of `run-case` for a case whose process gave no exit code of platefall's (killed by
+/// a signal): by how the case stands.
+fn case_exit(state: CaseState) -> Exit {
+    match state {
+        CaseState::Completed => Exit::Completed,
+        CaseState::Diverged => Exit::Diverged,
+        CaseState::Interrupted => Exit::Interrupted,
+        CaseState::Failed | CaseState::Unfinished | CaseState::Missing => Exit::OutputFailed,
+    }
 }

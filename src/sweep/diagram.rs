@@ -1,275 +1,129 @@
-//! The phase diagram's data: each case placed by two swept options, coloured by the motion regime
-//! its summary reports (`regime`; missing or null is "n/a"), with the chosen summary value for the
-//! second panel. Shared by the figure (`plot`) and the Rerun recording (`recording`).
-use std::path::PathBuf;
-
+//! The phase diagram's data from a sweep's plan and results ([`diagram_data`]): each case placed
+//! by one or two swept options, with the motion regime its summary reports (`regime`; missing or
+//! null is "n/a"), its mean C_L and C_D, and the chosen summary value. The data types are
+//! `platefall_post::phase`'s, shared by the figure (`plot`) and `phase.rrd` (the recording crate).
 use super::json;
 use super::plan::{Axis, Plan};
 use super::results::Row;
 use super::values::{Scale, Value};
+use platefall_post::phase::{CaseState, DiagramData, PlotAxis, Point};
+use platefall_post::regime::Regime;
 
-/// An RGB colour.
-pub type Rgb = (u8, u8, u8);
-
-/// The regimes in legend order, with their colours; anything else is drawn as "other".
-pub const REGIMES: [(&str, Rgb); 5] = [
-    ("steady", (31, 119, 180)),
-    ("fluttering", (44, 160, 44)),
-    ("tumbling", (255, 127, 14)),
-    ("chaotic", (214, 39, 40)),
-    ("n/a", (150, 150, 150)),
-];
-/// A regime name the legend does not know.
-pub const OTHER_REGIME: Rgb = (148, 103, 189);
-/// Cases that diverged or failed.
-pub const FAILED: Rgb = (40, 40, 40);
-
-/// The colour of a regime.
-pub fn regime_colour(regime: &str) -> Rgb {
-    REGIMES
+/// The axis of a swept option: categorical for text or true/false values, else numeric (log
+/// only when every value is positive).
+fn plot_axis(axis: &Axis, scale: Scale) -> PlotAxis {
+    let numeric = axis.values.iter().all(|v| v.as_f64().is_some());
+    let log_ok = axis
+        .values
         .iter()
-        .find(|(n, _)| *n == regime)
-        .map_or(OTHER_REGIME, |(_, c)| *c)
-}
-
-/// One axis of the diagram: a swept option, numeric (linear or log) or categorical.
-#[derive(Clone, Debug)]
-pub struct PlotAxis {
-    pub name: String,
-    pub scale: Scale,
-    /// For text or true/false values: the categories, placed at 0, 1, 2, ...
-    pub categories: Option<Vec<String>>,
-}
-
-impl PlotAxis {
-    fn new(axis: &Axis, scale: Scale) -> PlotAxis {
-        let numeric = axis.values.iter().all(|v| v.as_f64().is_some());
-        let log_ok = axis
-            .values
-            .iter()
-            .all(|v| v.as_f64().is_some_and(|x| x > 0.0));
-        PlotAxis {
-            name: axis.name.clone(),
-            scale: if numeric && log_ok {
-                scale
-            } else {
-                Scale::Linear
-            },
-            categories: (!numeric).then(|| {
-                let mut c: Vec<String> = Vec::new();
-                for v in &axis.values {
-                    if !c.contains(&v.arg()) {
-                        c.push(v.arg());
-                    }
+        .all(|v| v.as_f64().is_some_and(|x| x > 0.0));
+    PlotAxis {
+        name: axis.name.clone(),
+        scale: if numeric && log_ok {
+            scale
+        } else {
+            Scale::Linear
+        },
+        categories: (!numeric).then(|| {
+            let mut c: Vec<String> = Vec::new();
+            for v in &axis.values {
+                if !c.contains(&v.arg()) {
+                    c.push(v.arg());
                 }
-                c
-            }),
-        }
-    }
-
-    /// Where a value sits on the axis (log10 of it on a log axis).
-    pub fn position(&self, v: &Value) -> f64 {
-        if let Some(cats) = &self.categories {
-            return cats.iter().position(|c| *c == v.arg()).unwrap_or(0) as f64;
-        }
-        let x = v.as_f64().unwrap_or(0.0);
-        match self.scale {
-            Scale::Log => x.log10(),
-            Scale::Linear => x,
-        }
-    }
-
-    /// The tick label at a position.
-    pub fn label(&self, pos: f64) -> String {
-        if let Some(cats) = &self.categories {
-            let i = pos.round();
-            if (pos - i).abs() > 1e-6 || i < 0.0 {
-                return String::new();
             }
-            return cats.get(i as usize).cloned().unwrap_or_default();
-        }
-        let x = match self.scale {
-            Scale::Log => 10f64.powf(pos),
-            Scale::Linear => pos,
-        };
-        short_number(x)
-    }
-
-    /// The axis title.
-    pub fn title(&self) -> String {
-        match self.scale {
-            Scale::Log => format!("{} (log scale)", self.name),
-            Scale::Linear => self.name.clone(),
-        }
+            c
+        }),
     }
 }
 
-/// A number in at most 4 significant digits, without trailing zeros.
-pub fn short_number(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return format!("{x}");
+/// Where a value sits on an axis (log10 of it on a log axis, its index on a categorical one).
+fn position(axis: &PlotAxis, v: &Value) -> f64 {
+    if let Some(cats) = &axis.categories {
+        return cats.iter().position(|c| *c == v.arg()).unwrap_or(0) as f64;
     }
-    let mag = x.abs().log10().floor() as i32;
-    if !(-4..6).contains(&mag) {
-        return format!("{x:.2e}");
-    }
-    let decimals = (3 - mag).max(0) as usize;
-    let s = format!("{x:.decimals$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
+    let x = v.as_f64().unwrap_or(0.0);
+    match axis.scale {
+        Scale::Log => x.log10(),
+        Scale::Linear => x,
     }
 }
 
-/// One case in the diagram.
-#[derive(Clone, Debug)]
-pub struct Point {
-    pub id: String,
-    pub x: f64,
-    pub y: f64,
-    pub regime: String,
-    pub status: &'static str,
-    pub value: Option<f64>,
-    pub recording: Option<PathBuf>,
+/// The regime a summary reports, if any.
+fn regime_of(row: &Row) -> Option<Regime> {
+    json::get(&row.summary, "regime").and_then(|v| serde_json::from_value(v.clone()).ok())
 }
 
-impl Point {
-    /// The value the second panel shows: only completed cases' (a diverged run's means are not
-    /// results).
-    pub fn shown_value(&self) -> Option<f64> {
-        self.value.filter(|_| self.status == "completed")
-    }
-}
-
-/// Everything the figure and the recording draw.
-#[derive(Clone, Debug)]
-pub struct DiagramData {
-    pub title: String,
-    pub x: PlotAxis,
-    /// None for a one-parameter sweep (the regime panel is a strip, the value panel a curve).
-    pub y: Option<PlotAxis>,
-    pub value_key: String,
-    pub points: Vec<Point>,
-}
-
-/// The regime a summary reports: its `regime` string, or "n/a".
-fn regime_of(row: &Row) -> String {
-    match json::get(&row.summary, "regime") {
-        Some(serde_json::Value::String(s)) if !s.is_empty() => s.clone(),
-        _ => "n/a".into(),
-    }
-}
-
-impl DiagramData {
-    pub fn new(plan: &Plan, rows: &[Row]) -> DiagramData {
-        let d = &plan.diagram;
-        let find = |name: &str| plan.grid.iter().chain(&plan.zip).find(|a| a.name == name);
-        let x_axis = find(&d.x).map(|a| PlotAxis::new(a, d.x_scale));
-        let y_axis =
-            d.y.as_deref()
-                .and_then(find)
-                .map(|a| PlotAxis::new(a, d.y_scale));
-        let x = x_axis.unwrap_or(PlotAxis {
-            name: d.x.clone(),
-            scale: Scale::Linear,
-            categories: None,
-        });
-        let param = |r: &Row, name: &str| {
-            r.case
-                .params
-                .iter()
-                .find(|(n, _)| n == name)
-                .map(|(_, v)| v.clone())
-        };
-        let points = rows
-            .iter()
-            .map(|r| Point {
-                id: r.case.id.clone(),
-                x: param(r, &x.name).map_or(0.0, |v| x.position(&v)),
-                y: match &y_axis {
-                    Some(a) => param(r, &a.name).map_or(0.0, |v| a.position(&v)),
-                    None => 0.0,
-                },
-                regime: regime_of(r),
-                status: r.status,
-                value: json::get(&r.summary, &d.value).and_then(|v| v.as_f64()),
-                recording: r.recording.clone(),
-            })
-            .collect();
-        let done = rows.iter().filter(|r| r.status == "completed").count();
-        DiagramData {
-            title: format!(
-                "{}: {} cases of `{}` ({done} completed)",
-                plan.name,
-                rows.len(),
-                plan.case
-            ),
-            x,
-            y: y_axis,
-            value_key: d.value.clone(),
-            points,
-        }
-    }
-
-    /// The range of the chosen values over the completed cases that have one.
-    pub fn value_range(&self) -> Option<(f64, f64)> {
-        let vals = self.points.iter().filter_map(Point::shown_value);
-        let (lo, hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        });
-        (lo <= hi).then_some((lo, hi))
-    }
-}
-
-/// The plotted range of an axis's positions, padded (categories at -0.5 ..= n - 0.5).
-pub fn span(axis: Option<&PlotAxis>, positions: impl Iterator<Item = f64>) -> (f64, f64) {
-    if let Some(cats) = axis.and_then(|a| a.categories.as_ref()) {
-        return (-0.5, cats.len() as f64 - 0.5);
-    }
-    let (lo, hi) = positions.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), v| {
-        (l.min(v), h.max(v))
+/// The phase diagram of a plan's results.
+pub fn diagram_data(plan: &Plan, rows: &[Row]) -> DiagramData {
+    let d = &plan.diagram;
+    let find = |name: &str| plan.grid.iter().chain(&plan.zip).find(|a| a.name == name);
+    let x_axis = find(&d.x).map(|a| plot_axis(a, d.x_scale));
+    let y_axis =
+        d.y.as_deref()
+            .and_then(find)
+            .map(|a| plot_axis(a, d.y_scale));
+    let x = x_axis.unwrap_or(PlotAxis {
+        name: d.x.clone(),
+        scale: Scale::Linear,
+        categories: None,
     });
-    if lo > hi {
-        return (-1.0, 1.0);
+    let param = |r: &Row, name: &str| {
+        r.case
+            .params
+            .iter()
+            .find(|(n, _)| n == name)
+            .map(|(_, v)| v.clone())
+    };
+    let number = |r: &Row, key: &str| json::get(&r.summary, key).and_then(|v| v.as_f64());
+    let points = rows
+        .iter()
+        .map(|r| Point {
+            id: r.case.id.clone(),
+            x: param(r, &x.name).map_or(0.0, |v| position(&x, &v)),
+            y: match &y_axis {
+                Some(a) => param(r, &a.name).map_or(0.0, |v| position(a, &v)),
+                None => 0.0,
+            },
+            regime: regime_of(r),
+            state: r.status,
+            value: number(r, &d.value),
+            mean_cl: number(r, "mean_cl"),
+            mean_cd: number(r, "mean_cd"),
+            recording: r.recording.clone(),
+        })
+        .collect();
+    let done = rows
+        .iter()
+        .filter(|r| r.status == CaseState::Completed)
+        .count();
+    DiagramData {
+        title: format!(
+            "{}: {} cases of `{}` ({done} completed)",
+            plan.name,
+            rows.len(),
+            plan.case
+        ),
+        case: plan.case,
+        x,
+        y: y_axis,
+        value_key: d.value.clone(),
+        points,
     }
-    let pad = if hi > lo {
-        0.08 * (hi - lo)
-    } else {
-        0.5_f64.max(lo.abs() * 0.1)
-    };
-    (lo - pad, hi + pad)
-}
-
-/// A perceptually ordered colour map (dark blue → green → yellow, after viridis) at s in [0, 1].
-pub fn colour_map(s: f64) -> Rgb {
-    const STOPS: [Rgb; 5] = [
-        (68, 1, 84),
-        (59, 82, 139),
-        (33, 145, 140),
-        (94, 201, 98),
-        (253, 231, 37),
-    ];
-    let s = if s.is_finite() {
-        s.clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    let f = s * (STOPS.len() - 1) as f64;
-    let i = (f.floor() as usize).min(STOPS.len() - 2);
-    let t = f - i as f64;
-    let mix = |a: u8, b: u8| (a as f64 + t * (b as f64 - a as f64)).round() as u8;
-    let (a, b) = (STOPS[i], STOPS[i + 1]);
-    (mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::cli::CommandLineCases;
     use crate::sweep::plan::parse;
+    use platefall_post::phase::{regime_colour, span, NO_REGIME};
+
+    fn plan_of(text: &str) -> Plan {
+        parse(text, "t", &CommandLineCases).unwrap()
+    }
 
     /// Rows of a plan with the given regimes (None: no `regime` key) and statuses.
-    fn rows(plan: &Plan, regimes: &[(Option<&str>, &'static str)]) -> Vec<Row> {
+    fn rows(plan: &Plan, regimes: &[(Option<&str>, CaseState)]) -> Vec<Row> {
         plan.cases()
             .into_iter()
             .zip(regimes)
@@ -292,22 +146,21 @@ mod tests {
 
     #[test]
     fn points_take_the_summary_regime_or_n_a_and_the_chosen_axes() {
-        let plan = parse(
+        let plan = plan_of(
             "case = \"free\"\n[grid]\nmass = [1, 2]\ninertia = { from = 0.01, to = 1, count = 3, scale = \"log\" }\n\
              [diagram]\nx = \"inertia\"\ny = \"mass\"\n",
-            "t",
-        )
-        .unwrap();
+        );
+        let c = CaseState::Completed;
         let regimes = [
-            (Some("steady"), "completed"),
-            (Some("fluttering"), "completed"),
-            (Some("tumbling"), "completed"),
-            (Some("chaotic"), "completed"),
-            (None, "completed"),
-            (Some("tumbling"), "diverged"),
+            (Some("steady"), c),
+            (Some("fluttering"), c),
+            (Some("tumbling"), c),
+            (Some("chaotic"), c),
+            (None, c),
+            (Some("tumbling"), CaseState::Diverged),
         ];
-        let data = DiagramData::new(&plan, &rows(&plan, &regimes));
-        let got: Vec<&str> = data.points.iter().map(|p| p.regime.as_str()).collect();
+        let data = diagram_data(&plan, &rows(&plan, &regimes));
+        let got: Vec<&str> = data.points.iter().map(|p| p.regime_name()).collect();
         assert_eq!(
             got,
             [
@@ -326,20 +179,19 @@ mod tests {
         assert_eq!(data.x.label(-1.0), "0.1");
         // The diverged case (value 5) is left out of the value panel.
         assert_eq!(data.value_range(), Some((0.0, 4.0)));
-        assert_eq!(regime_colour("tumbling"), (255, 127, 14));
-        assert_eq!(regime_colour("autorotating"), OTHER_REGIME);
+        assert_eq!(regime_colour(Some(Regime::Tumbling)), (255, 127, 14));
+        assert_eq!(regime_colour(None), NO_REGIME);
     }
 
     #[test]
     fn text_values_make_a_categorical_axis() {
-        let plan = parse(
-            "case = \"free\"\n[grid]\npreset = [\"card\", \"none\"]\nmass = [1]\n",
-            "t",
-        )
-        .unwrap();
-        let data = DiagramData::new(
+        let plan = plan_of("case = \"free\"\n[grid]\npreset = [\"card\", \"none\"]\nmass = [1]\n");
+        let data = diagram_data(
             &plan,
-            &rows(&plan, &[(None, "completed"), (None, "missing")]),
+            &rows(
+                &plan,
+                &[(None, CaseState::Completed), (None, CaseState::Missing)],
+            ),
         );
         assert_eq!(
             data.x.categories.as_deref(),
@@ -354,13 +206,13 @@ mod tests {
 
     #[test]
     fn figures_and_recording_are_written_for_every_kind_of_point() {
-        let plan = parse("case = \"free\"\n[grid]\nmass = [1, 2, 3]\n", "t").unwrap();
+        let plan = plan_of("case = \"free\"\n[grid]\nmass = [1, 2, 3]\n");
         let regimes = [
-            (Some("steady"), "completed"),
-            (None, "failed"),
-            (None, "missing"),
+            (Some("steady"), CaseState::Completed),
+            (None, CaseState::Failed),
+            (None, CaseState::Missing),
         ];
-        let data = DiagramData::new(&plan, &rows(&plan, &regimes));
+        let data = diagram_data(&plan, &rows(&plan, &regimes));
         let dir = std::env::temp_dir().join(format!("platefall-diagram-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
         let layout = crate::sweep::layout::Layout::new(&dir);
@@ -368,9 +220,8 @@ mod tests {
         let png = std::fs::read(dir.join("phase.png")).unwrap();
         assert_eq!(&png[1..4], b"PNG");
         let svg = std::fs::read_to_string(dir.join("phase.svg")).unwrap();
-        assert!(svg.contains("motion regime") && svg.contains("steady (1)"));
-        #[cfg(feature = "viewer")]
-        crate::sweep::recording::write_recording(&layout, &data).unwrap();
+        assert!(svg.contains("mean_omega against mass") && svg.contains("steady (1)"));
+        platefall_record::viewer::write_phase_recording(&dir.join("phase.rrd"), &data).unwrap();
         let _ = std::fs::remove_dir_all(&dir);
     }
 }

@@ -24,13 +24,11 @@ impl<'de> Visitor<'de> for ObjectVisitor {
     }
 }
 
-/// Parses a JSON object keeping its key order; the error is one line.
-pub fn parse_object(text: &str) -> Result<Object, String> {
+/// Parses a JSON object keeping its key order.
+pub fn parse_object(text: &str) -> Result<Object, serde_json::Error> {
     let mut de = serde_json::Deserializer::from_str(text);
-    let object = de
-        .deserialize_map(ObjectVisitor)
-        .map_err(|e| e.to_string())?;
-    de.end().map_err(|e| e.to_string())?;
+    let object = de.deserialize_map(ObjectVisitor)?;
+    de.end()?;
     Ok(object)
 }
 

@@ -5,9 +5,10 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
-use super::fsutil::write_output;
+use super::clock::hostname;
+use super::failure::{write_output, Failure};
 use super::plan::{CaseSpec, Plan};
-use super::Failure;
+use platefall_core::sim::CaseKind;
 
 /// Version of `sweep.json`.
 const MANIFEST_FORMAT: u32 = 1;
@@ -63,7 +64,7 @@ pub struct Manifest {
     /// The plan's name (titles); not part of what makes two plans different.
     #[serde(default)]
     pub name: String,
-    pub case: String,
+    pub case: CaseKind,
     pub recording: bool,
     pub cases: Vec<CaseSpec>,
 }
@@ -73,7 +74,7 @@ impl Manifest {
         Manifest {
             format: MANIFEST_FORMAT,
             name: plan.name.clone(),
-            case: plan.case.clone(),
+            case: plan.case,
             recording: plan.outputs.recording,
             cases: cases.to_vec(),
         }
@@ -174,12 +175,7 @@ pub fn lock(layout: &Layout) -> Result<DirLock, Failure> {
     let _ = file.set_len(0);
     let _ = std::io::Write::write_all(
         &mut &file,
-        format!(
-            "pid {} on {}",
-            std::process::id(),
-            super::fsutil::hostname()
-        )
-        .as_bytes(),
+        format!("pid {} on {}", std::process::id(), hostname()).as_bytes(),
     );
     Ok(DirLock { _file: file })
 }

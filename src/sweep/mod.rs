@@ -7,73 +7,68 @@
 //! `phase.svg`, `phase.rrd`). A case is done when its summary exists at its final name and says
 //! `completed` or `diverged`; everything else is run again by the next sweep over the same plan.
 //!
-//! Files: `args` (command line), `plan`, `values` and `cases` (the plan format and its cases),
-//! `validate` (the CLI's own validation of each case: the one file that calls into the CLI layer),
-//! `layout` (paths, manifest, lock), `fsutil` (atomic writes, times), `json` (ordered objects),
-//! `child` (one case as a child process), `runner` (the local pool), `progress`, `results`,
-//! `diagram` and `plot` (the figure), `recording` (the Rerun phase diagram, behind the `viewer`
-//! feature), `slurm`, `commands` (the entry points).
-pub mod args;
-pub mod cases;
-pub mod child;
-pub mod commands;
-pub mod diagram;
-pub mod fsutil;
-pub mod json;
-pub mod layout;
-pub mod plan;
+//! The sweep knows no clap: the command line gives it a [`SweepRequest`] and answers what it
+//! needs to know of the case subcommands ([`CaseCommands`]). Files, each using only those after
+//! it: `commands` (the entry points), `slurm`, `runner` (the local pool), `progress`, `results`,
+//! `diagram` (the phase diagram's data from the results) and `plot` (the figure; `phase.rrd` is
+//! the recording crate's), `child` (one case as a child process), `layout` (paths, manifest,
+//! lock), `cases`, `plan`, `options` and `values` (the plan format and its cases), `json`
+//! (ordered objects), `failure` (exit codes, atomic writes), `clock`.
+mod cases;
+mod child;
+mod clock;
+mod commands;
+mod diagram;
+mod failure;
+mod json;
+mod layout;
+mod options;
+mod plan;
 #[cfg(test)]
 mod plan_tests;
-pub mod plot;
-pub mod progress;
-#[cfg(feature = "viewer")]
-pub mod recording;
-pub mod results;
-pub mod runner;
-pub mod slurm;
-pub mod validate;
-pub mod values;
+mod plot;
+mod progress;
+mod results;
+mod runner;
+mod slurm;
+mod values;
 
-pub use args::SweepArgs;
-pub use commands::main;
+use std::path::PathBuf;
 
-/// A sweep that stops: the process exit code and one line saying why.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Failure {
-    pub code: u8,
-    pub message: String,
+pub(crate) use commands::main;
+pub(crate) use options::{CaseCommands, OptionInfo};
+pub(crate) use plan::PlanError;
+pub(crate) use progress::ProgressMode;
+pub(crate) use slurm::SlurmOverrides;
+
+/// What the command line asks of the sweep.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum SweepRequest {
+    /// Run a plan's cases (or only list them, or write a Slurm script for them).
+    Run {
+        /// The plan file.
+        plan: PathBuf,
+        /// Cases run at once (None: one per core).
+        jobs: Option<usize>,
+        /// List the cases without running anything.
+        dry_run: bool,
+        /// The output directory (None: the plan's).
+        output: Option<PathBuf>,
+        /// The progress display.
+        progress: ProgressMode,
+        /// Write a Slurm job-array script with these resources instead of running the cases.
+        slurm: Option<SlurmOverrides>,
+    },
+    /// Merge whatever has finished in a sweep directory.
+    Collect {
+        /// The sweep directory.
+        dir: PathBuf,
+    },
+    /// Run one case of a prepared sweep directory (what each Slurm array task runs).
+    RunCase {
+        /// The sweep directory.
+        dir: PathBuf,
+        /// The case's index.
+        index: usize,
+    },
 }
-
-/// Exit code of a bad plan or bad command line (nothing is run or written).
-pub const EXIT_BAD_INPUT: u8 = 2;
-/// Exit code when the sweep finished but some cases did not complete (diverged, failed, missing).
-pub const EXIT_INCOMPLETE: u8 = 3;
-/// Exit code when an output of the sweep could not be written.
-pub const EXIT_OUTPUT: u8 = 4;
-/// Exit code after Ctrl-C (the running cases are finalised and the results merged first).
-pub const EXIT_INTERRUPTED: u8 = 130;
-
-impl Failure {
-    /// Bad input: exit 2.
-    pub fn input(message: impl Into<String>) -> Self {
-        Failure {
-            code: EXIT_BAD_INPUT,
-            message: message.into(),
-        }
-    }
-    /// An output that could not be written: exit 4.
-    pub fn output(message: impl Into<String>) -> Self {
-        Failure {
-            code: EXIT_OUTPUT,
-            message: message.into(),
-        }
-    }
-}
-
-impl std::fmt::Display for Failure {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for Failure {}

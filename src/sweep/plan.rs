@@ -6,8 +6,22 @@ use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 
-use super::validate::{self, OptionInfo, CASES, MANAGED};
+use super::options::{CaseCommands, OptionInfo, MANAGED};
 use super::values::{expand, one_line, Scale, Value};
+use platefall_core::sim::CaseKind;
+
+/// A plan that cannot run: one line naming the value and what is accepted (exit 2).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub(crate) struct PlanError(pub(crate) String);
+
+/// A [`PlanError`] from a format string.
+macro_rules! plan_err {
+    ($($t:tt)*) => {
+        PlanError(format!($($t)*))
+    };
+}
+pub(crate) use plan_err;
 
 /// `[outputs]`: what each case writes besides its summary, CSV and log.
 #[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
@@ -93,7 +107,7 @@ pub struct Axis {
 pub struct Plan {
     /// Used in titles and job names: `name`, or the plan file's stem.
     pub name: String,
-    pub case: String,
+    pub case: CaseKind,
     /// The output directory as written (None: give --output).
     pub output: Option<PathBuf>,
     pub fixed: Vec<(String, Value)>,
@@ -121,37 +135,38 @@ pub struct CaseSpec {
 }
 
 /// Reads and checks a plan file.
-pub fn load(path: &Path) -> Result<Plan, String> {
+pub fn load(path: &Path, commands: &dyn CaseCommands) -> Result<Plan, PlanError> {
     let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| format!("plan {shown}: {e}"))?;
+    let text = std::fs::read_to_string(path).map_err(|e| plan_err!("plan {shown}: {e}"))?;
     let stem = path
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_else(|| "sweep".into());
-    parse(&text, &stem).map_err(|e| format!("plan {shown}: {e}"))
+    parse(&text, &stem, commands).map_err(|e| plan_err!("plan {shown}: {e}"))
 }
 
 /// Parses and checks a plan's text (`stem` names it when it has no `name`).
-pub fn parse(text: &str, stem: &str) -> Result<Plan, String> {
+pub fn parse(text: &str, stem: &str, commands: &dyn CaseCommands) -> Result<Plan, PlanError> {
     let raw: RawPlan = toml::from_str(text).map_err(|e| toml_error(&e, text))?;
-    if !CASES.contains(&raw.case.as_str()) {
-        return Err(format!(
+    let Some(case) = CaseKind::from_name(&raw.case) else {
+        let names: Vec<&str> = CaseKind::ALL.iter().map(|k| k.name()).collect();
+        return Err(plan_err!(
             "case = \"{}\" is not a case: accepted {}",
             raw.case,
-            CASES.join(", ")
+            names.join(", ")
         ));
-    }
-    let known = validate::case_options(&raw.case).unwrap_or_default();
+    };
+    let known = commands.options(case);
     let mut seen = Vec::new();
-    let fixed = fixed_options(&raw.fixed, &known, &raw.case, &mut seen)?;
-    let grid = axes(&raw.grid, "grid", &known, &raw.case, &mut seen)?;
-    let zip = axes(&raw.zip, "zip", &known, &raw.case, &mut seen)?;
+    let fixed = fixed_options(&raw.fixed, &known, case, &mut seen)?;
+    let grid = axes(&raw.grid, "grid", &known, case, &mut seen)?;
+    let zip = axes(&raw.zip, "zip", &known, case, &mut seen)?;
     check_zip(&zip)?;
-    let diagram = diagram(&raw.diagram, &grid, &zip, &raw.case)?;
+    let diagram = diagram(&raw.diagram, &grid, &zip, case)?;
     let name = raw.name.clone().unwrap_or_else(|| stem.to_string());
     let plan = Plan {
         name,
-        case: raw.case,
+        case,
         output: raw.output,
         fixed,
         grid,
@@ -166,14 +181,14 @@ pub fn parse(text: &str, stem: &str) -> Result<Plan, String> {
 }
 
 /// A TOML error on one line, with its line number.
-fn toml_error(e: &toml::de::Error, text: &str) -> String {
+fn toml_error(e: &toml::de::Error, text: &str) -> PlanError {
     let msg = one_line(e.message());
     match e.span() {
         Some(span) => {
             let line = text[..span.start.min(text.len())].matches('\n').count() + 1;
-            format!("line {line}: {msg}")
+            plan_err!("line {line}: {msg}")
         }
-        None => msg,
+        None => PlanError(msg),
     }
 }
 
@@ -187,12 +202,12 @@ fn check_name(
     raw: &str,
     table: &str,
     known: &[OptionInfo],
-    case: &str,
+    case: CaseKind,
     seen: &mut Vec<(String, String)>,
-) -> Result<OptionInfo, String> {
+) -> Result<OptionInfo, PlanError> {
     let name = normalise(raw);
     if MANAGED.contains(&name.as_str()) {
-        return Err(format!(
+        return Err(plan_err!(
             "[{table}] {raw}: the sweep sets --{name} itself for every case (under DIR/cases/<id>/); remove it"
         ));
     }
@@ -202,13 +217,13 @@ fn check_name(
             .map(|o| o.name.as_str())
             .filter(|n| !MANAGED.contains(n))
             .collect();
-        return Err(format!(
+        return Err(plan_err!(
             "[{table}] {raw}: `{case}` has no option --{name}: accepted {}",
             accepted.join(", ")
         ));
     };
     if let Some((_, other)) = seen.iter().find(|(n, _)| *n == name) {
-        return Err(format!(
+        return Err(plan_err!(
             "[{table}] {raw}: option --{name} is already given in [{other}]; give each option once"
         ));
     }
@@ -217,15 +232,15 @@ fn check_name(
 }
 
 /// A value's type against the option's: flags take true/false, other options anything else.
-fn check_kind(info: &OptionInfo, v: &Value, what: &str) -> Result<(), String> {
+fn check_kind(info: &OptionInfo, v: &Value, what: &str) -> Result<(), PlanError> {
     match (info.takes_value, v) {
         (false, Value::Bool(_)) => Ok(()),
-        (false, other) => Err(format!(
+        (false, other) => Err(plan_err!(
             "{what} = {}: --{} is a flag: accepted true or false",
             other.arg(),
             info.name
         )),
-        (true, Value::Bool(b)) => Err(format!(
+        (true, Value::Bool(b)) => Err(plan_err!(
             "{what} = {b}: --{} takes a value, not true/false",
             info.name
         )),
@@ -237,15 +252,15 @@ fn check_kind(info: &OptionInfo, v: &Value, what: &str) -> Result<(), String> {
 fn fixed_options(
     table: &toml::Table,
     known: &[OptionInfo],
-    case: &str,
+    case: CaseKind,
     seen: &mut Vec<(String, String)>,
-) -> Result<Vec<(String, Value)>, String> {
+) -> Result<Vec<(String, Value)>, PlanError> {
     let mut out = Vec::new();
     for (raw, v) in table {
         let info = check_name(raw, "fixed", known, case, seen)?;
         let what = format!("[fixed] {raw}");
         if matches!(v, toml::Value::Array(_) | toml::Value::Table(_)) {
-            return Err(format!(
+            return Err(plan_err!(
                 "{what}: [fixed] takes one value per option; sweep lists and ranges in [grid] or [zip]"
             ));
         }
@@ -261,9 +276,9 @@ fn axes(
     table: &toml::Table,
     section: &str,
     known: &[OptionInfo],
-    case: &str,
+    case: CaseKind,
     seen: &mut Vec<(String, String)>,
-) -> Result<Vec<Axis>, String> {
+) -> Result<Vec<Axis>, PlanError> {
     let mut out = Vec::new();
     for (raw, v) in table {
         let info = check_name(raw, section, known, case, seen)?;
@@ -282,13 +297,13 @@ fn axes(
 }
 
 /// Zipped options advance together, so their lists must have one length.
-fn check_zip(zip: &[Axis]) -> Result<(), String> {
+fn check_zip(zip: &[Axis]) -> Result<(), PlanError> {
     let Some(first) = zip.first() else {
         return Ok(());
     };
     for a in &zip[1..] {
         if a.values.len() != first.values.len() {
-            return Err(format!(
+            return Err(plan_err!(
                 "[zip] {} has {} values but {} has {}: zipped options need equally many values",
                 a.name,
                 a.values.len(),
@@ -301,22 +316,27 @@ fn check_zip(zip: &[Axis]) -> Result<(), String> {
 }
 
 /// The summary key shown by default in the second panel.
-fn default_value_key(case: &str) -> &'static str {
+fn default_value_key(case: CaseKind) -> &'static str {
     match case {
-        "static" => "mean_cl",
-        "forced" => "mean_cm",
-        _ => "mean_omega",
+        CaseKind::Static => "mean_cl",
+        CaseKind::Forced => "mean_cm",
+        CaseKind::Pinned | CaseKind::Free => "mean_omega",
     }
 }
 
 /// `[diagram]`: axes default to the first two swept options.
-fn diagram(raw: &RawDiagram, grid: &[Axis], zip: &[Axis], case: &str) -> Result<Diagram, String> {
+fn diagram(
+    raw: &RawDiagram,
+    grid: &[Axis],
+    zip: &[Axis],
+    case: CaseKind,
+) -> Result<Diagram, PlanError> {
     let swept: Vec<&Axis> = grid.iter().chain(zip).collect();
     if swept.is_empty() {
-        return Err(
+        return Err(PlanError(
             "nothing is swept: give at least one option in [grid] or [zip] (e.g. alpha = [0.2, 0.4])"
                 .into(),
-        );
+        ));
     }
     let names: Vec<&str> = swept.iter().map(|a| a.name.as_str()).collect();
     let pick = |key: &str, given: &Option<String>, default: Option<&str>| match given {
@@ -324,7 +344,7 @@ fn diagram(raw: &RawDiagram, grid: &[Axis], zip: &[Axis], case: &str) -> Result<
             let n = normalise(n);
             match swept.iter().find(|a| a.name == n) {
                 Some(a) => Ok(Some(a.name.clone())),
-                None => Err(format!(
+                None => Err(plan_err!(
                     "[diagram] {key} = \"{n}\" is not a swept option: accepted {}",
                     names.join(", ")
                 )),
@@ -340,7 +360,7 @@ fn diagram(raw: &RawDiagram, grid: &[Axis], zip: &[Axis], case: &str) -> Result<
         _ => pick("y", &raw.y, y_default)?,
     };
     if y.as_deref() == Some(x.as_str()) {
-        return Err(format!(
+        return Err(plan_err!(
             "[diagram] x and y are both \"{x}\": choose two different swept options"
         ));
     }
@@ -366,7 +386,7 @@ fn diagram(raw: &RawDiagram, grid: &[Axis], zip: &[Axis], case: &str) -> Result<
 }
 
 /// Slurm strings end up in a shell script: refuse line breaks.
-pub fn check_slurm(s: &SlurmPlan) -> Result<(), String> {
+pub fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
     let fields = [
         ("time", &s.time),
         ("memory", &s.memory),
@@ -375,18 +395,20 @@ pub fn check_slurm(s: &SlurmPlan) -> Result<(), String> {
     for (key, v) in fields {
         if let Some(v) = v {
             if v.is_empty() || v.contains(['\n', '\r', ' ']) {
-                return Err(format!(
+                return Err(plan_err!(
                     "[slurm] {key} = {v:?}: accepted one word as sbatch takes it (e.g. time = \"01:00:00\", memory = \"2G\")"
                 ));
             }
         }
     }
     if s.cpus == Some(0) || s.max_parallel == Some(0) {
-        return Err("[slurm] cpus and max-parallel: accepted 1 or more".into());
+        return Err(PlanError(
+            "[slurm] cpus and max-parallel: accepted 1 or more".into(),
+        ));
     }
     for line in s.sbatch.iter().chain(&s.setup) {
         if line.contains(['\n', '\r']) {
-            return Err(format!(
+            return Err(plan_err!(
                 "[slurm] {line:?}: one line per entry (no line breaks)"
             ));
         }

@@ -1,6 +1,12 @@
 //! Unit tests of the plan format: ranges, grid and zip, ids, flags, defaults.
-use super::plan::parse;
+use super::plan::{Plan, PlanError};
 use super::values::{Scale, Value};
+use crate::cli::CommandLineCases;
+
+/// A plan's text parsed against this command line's case options.
+fn parse(text: &str, stem: &str) -> Result<Plan, PlanError> {
+    super::plan::parse(text, stem, &CommandLineCases)
+}
 
 fn args_of(plan: &str) -> Vec<Vec<String>> {
     let p = parse(plan, "t").expect("plan parses");
@@ -145,7 +151,7 @@ fn the_diagram_defaults_to_the_first_two_swept_options() {
 
 #[test]
 fn plan_errors_name_the_value_and_what_is_accepted() {
-    let err = |body: &str| parse(body, "t").unwrap_err();
+    let err = |body: &str| parse(body, "t").unwrap_err().0;
     assert!(
         err("case = \"static\"\n[grid]\nre = { from = 1, to = 2 }\n")
             .contains("missing field `count`")

@@ -1,19 +1,26 @@
-//! The phase-diagram figure (`phase.png`, `phase.svg`) drawn with plotters: on the left the cases
-//! in the plane of two swept options coloured by motion regime; on the right the chosen summary
-//! value (a colour map in the plane, or a curve for a one-parameter sweep). Text is rendered with
-//! the DejaVu Sans font compiled into the binary, so no system font library is needed.
+//! The phase-diagram figure (`phase.png`, `phase.svg`) drawn with plotters.
+//!
+//! - Two swept options: on the left the cases in their plane coloured by motion regime (for
+//!   static plates, which have no regime, the mean C_L and C_D against the x option, one pair of
+//!   curves per y value); on the right the chosen summary value as a colour map in the plane.
+//! - One swept option: the chosen value against the option, each case's marker coloured by its
+//!   regime (for static plates: the mean C_L and C_D on the left, the value on the right).
+//!
+//! Text is rendered with the DejaVu Sans font compiled into the binary, so no system font
+//! library is needed.
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::diagram::{
-    colour_map, regime_colour, short_number, span, DiagramData, PlotAxis, Point, Rgb, FAILED,
-    REGIMES,
-};
-use super::fsutil::write_output;
+use super::failure::{write_output, Failure};
 use super::layout::Layout;
-use super::Failure;
+use platefall_core::param::rounded as short_number;
+use platefall_post::phase::{
+    colour_map, regime_colour, span, CaseState, DiagramData, PlotAxis, Point, Rgb, FAILED,
+    REGIME_COLOURS,
+};
+use platefall_post::regime::Regime;
 
 /// Figure size in pixels.
 const SIZE: (u32, u32) = (1280, 560);
@@ -34,7 +41,7 @@ fn register_font() {
 /// Writes `phase.svg` and `phase.png` (each atomically).
 pub fn write_figures(layout: &Layout, data: &DiagramData) -> Result<(), Failure> {
     register_font();
-    let fail = |e: String| Failure::output(format!("drawing the phase diagram: {e}"));
+    let fail = |e: DrawError| Failure::output(format!("drawing the phase diagram: {}", e.0));
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
@@ -51,25 +58,35 @@ pub fn write_figures(layout: &Layout, data: &DiagramData) -> Result<(), Failure>
 }
 
 /// RGB pixels as a PNG file.
-fn encode_png(pixels: &[u8], (w, h): (u32, u32)) -> Result<Vec<u8>, String> {
+fn encode_png(pixels: &[u8], (w, h): (u32, u32)) -> Result<Vec<u8>, DrawError> {
     let mut out = Vec::new();
     let mut enc = png::Encoder::new(&mut out, w, h);
     enc.set_color(png::ColorType::Rgb);
     enc.set_depth(png::BitDepth::Eight);
-    let mut writer = enc.write_header().map_err(|e| e.to_string())?;
-    writer.write_image_data(pixels).map_err(|e| e.to_string())?;
-    writer.finish().map_err(|e| e.to_string())?;
+    let mut writer = enc.write_header().map_err(err)?;
+    writer.write_image_data(pixels).map_err(err)?;
+    writer.finish().map_err(err)?;
     Ok(out)
 }
 
 type Area<'a, DB> = DrawingArea<DB, Shift>;
 
-fn err<E: std::fmt::Debug>(e: E) -> String {
-    format!("{e:?}")
+/// Why the figure could not be drawn (plotters' error, as text).
+#[derive(Debug)]
+struct DrawError(String);
+
+impl From<&str> for DrawError {
+    fn from(s: &str) -> Self {
+        DrawError(s.to_string())
+    }
 }
 
-/// The whole figure: a title over the two panels.
-fn draw<DB: DrawingBackend>(root: &Area<DB>, data: &DiagramData) -> Result<(), String> {
+fn err<E: std::fmt::Debug>(e: E) -> DrawError {
+    DrawError(format!("{e:?}"))
+}
+
+/// The whole figure: a title over the panels (see the module docs).
+fn draw<DB: DrawingBackend>(root: &Area<DB>, data: &DiagramData) -> Result<(), DrawError> {
     root.fill(&WHITE).map_err(err)?;
     let (top, body) = root.split_vertically(44);
     top.draw(&Text::new(
@@ -78,23 +95,48 @@ fn draw<DB: DrawingBackend>(root: &Area<DB>, data: &DiagramData) -> Result<(), S
         (FONT, 22).into_font().color(&BLACK),
     ))
     .map_err(err)?;
-    let (left, right) = body.split_horizontally(SIZE.0 / 2);
-    regime_panel(&left, data)?;
-    if data.y.is_some() {
-        value_map_panel(&right, data)?;
-    } else {
-        value_curve_panel(&right, data)?;
+    match (data.y.is_some(), data.is_static()) {
+        (false, false) => regime_curve_panel(&body, data)?,
+        (two_axes, is_static) => {
+            let (left, right) = body.split_horizontally(SIZE.0 / 2);
+            if is_static {
+                coefficient_panel(&left, data)?;
+            } else {
+                regime_panel(&left, data)?;
+            }
+            if two_axes {
+                value_map_panel(&right, data)?;
+            } else {
+                value_curve_panel(&right, data)?;
+            }
+        }
     }
     root.present().map_err(err)
 }
 
 /// How a case is drawn in the regime panel, and its legend entry.
 fn regime_key(p: &Point) -> String {
-    match p.status {
-        "completed" => p.regime.clone(),
-        "diverged" | "failed" => "diverged / failed".into(),
+    match p.state {
+        CaseState::Completed => p.regime_name().to_string(),
+        CaseState::Diverged | CaseState::Failed => "diverged / failed".into(),
         _ => "not run / unfinished".into(),
     }
+}
+
+/// The legend keys of the regime panels, in order: every regime, then the others seen.
+fn regime_keys(data: &DiagramData) -> Vec<String> {
+    let mut keys: Vec<String> = REGIME_COLOURS
+        .iter()
+        .map(|(r, _)| r.name().to_string())
+        .collect();
+    keys.push("n/a".into());
+    for p in &data.points {
+        let k = regime_key(p);
+        if !keys.contains(&k) {
+            keys.push(k);
+        }
+    }
+    keys
 }
 
 /// What a panel's vertical axis shows.
@@ -104,8 +146,6 @@ enum YAxis<'a> {
     Param(&'a PlotAxis),
     /// A summary value.
     Value(&'a str),
-    /// Nothing (a one-parameter regime strip).
-    Strip,
 }
 
 type Chart<'a, DB> = ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
@@ -128,14 +168,14 @@ fn chart_in<'a, DB: DrawingBackend>(
     data: &DiagramData,
     y: YAxis,
     ranges: ((f64, f64), (f64, f64)),
-) -> Result<Chart<'a, DB>, String> {
+) -> Result<Chart<'a, DB>, DrawError> {
     let (xs, ys) = ranges;
     let x = &data.x;
     let mut chart = ChartBuilder::on(area)
         .caption(caption, (FONT, 18))
         .margin(12)
         .x_label_area_size(46)
-        .y_label_area_size(if matches!(y, YAxis::Strip) { 10 } else { 64 })
+        .y_label_area_size(64)
         .build_cartesian_2d(xs.0..xs.1, ys.0..ys.1)
         .map_err(err)?;
     let x_ticks = swept_ticks(data.points.iter().map(|p| p.x));
@@ -168,9 +208,6 @@ fn chart_in<'a, DB: DrawingBackend>(
         YAxis::Value(key) => {
             mesh.y_desc(key);
         }
-        YAxis::Strip => {
-            mesh.disable_y_axis().disable_y_mesh();
-        }
     }
     mesh.draw().map_err(err)?;
     if let Some(t) = &x_ticks {
@@ -190,7 +227,7 @@ fn label_ticks<DB: DrawingBackend>(
     positions: &[f64],
     at: impl Fn(f64) -> (f64, f64),
     label: impl Fn(f64) -> String,
-) -> Result<(), String> {
+) -> Result<(), DrawError> {
     let (xr, yr) = (chart.x_range(), chart.y_range());
     let base = area.get_base_pixel();
     for &p in positions {
@@ -220,22 +257,24 @@ fn label_ticks<DB: DrawingBackend>(
 /// Width of the legend column beside the regime panel.
 const LEGEND_WIDTH: u32 = 170;
 
-/// The left panel: cases in the parameter plane coloured by regime, with a legend column.
-fn regime_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Result<(), String> {
+/// The left panel of a two-option sweep: cases in the parameter plane coloured by regime, with a
+/// legend column.
+fn regime_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Result<(), DrawError> {
     let (plot_area, legend_area) = area.split_horizontally(area.dim_in_pixel().0 - LEGEND_WIDTH);
     let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
     let ys = span(data.y.as_ref(), data.points.iter().map(|p| p.y));
-    let y = data.y.as_ref().map_or(YAxis::Strip, YAxis::Param);
-    let mut chart = chart_in(&plot_area, "motion regime", data, y, (xs, ys))?;
-    let mut keys: Vec<String> = REGIMES.iter().map(|(n, _)| n.to_string()).collect();
-    for p in &data.points {
-        let k = regime_key(p);
-        if !keys.contains(&k) {
-            keys.push(k);
-        }
-    }
+    let Some(y_axis) = data.y.as_ref() else {
+        return Err("the regime plane needs two swept options".into());
+    };
+    let mut chart = chart_in(
+        &plot_area,
+        "motion regime",
+        data,
+        YAxis::Param(y_axis),
+        (xs, ys),
+    )?;
     let mut entries = Vec::new();
-    for key in keys {
+    for key in regime_keys(data) {
         let pts: Vec<&Point> = data
             .points
             .iter()
@@ -254,7 +293,10 @@ fn regime_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Resu
 }
 
 /// The legend: one marker and label per entry, from the top of its column.
-fn legend<DB: DrawingBackend>(area: &Area<DB>, entries: &[(String, Style)]) -> Result<(), String> {
+fn legend<DB: DrawingBackend>(
+    area: &Area<DB>,
+    entries: &[(String, Style)],
+) -> Result<(), DrawError> {
     for (i, (label, style)) in entries.iter().enumerate() {
         let y = 70 + 24 * i as i32;
         area.draw(&point_element((12, y), *style)).map_err(err)?;
@@ -280,7 +322,9 @@ fn key_style(key: &str) -> Style {
     match key {
         "diverged / failed" => Style::Cross,
         "not run / unfinished" => Style::Hollow,
-        regime => Style::Filled(regime_colour(regime)),
+        regime => Style::Filled(regime_colour(
+            Regime::ALL.into_iter().find(|r| r.name() == regime),
+        )),
     }
 }
 
@@ -297,12 +341,23 @@ fn point_element<C: Copy + 'static, DB: DrawingBackend>(
 }
 
 /// The right panel of a two-parameter sweep: the chosen value as a colour map, with a colour bar.
-fn value_map_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> Result<(), String> {
+fn value_map_panel<DB: DrawingBackend>(
+    area: &Area<DB>,
+    data: &DiagramData,
+) -> Result<(), DrawError> {
     let (plot_area, bar_area) = area.split_horizontally(area.dim_in_pixel().0 - 90);
     let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
     let ys = span(data.y.as_ref(), data.points.iter().map(|p| p.y));
-    let y = data.y.as_ref().map_or(YAxis::Strip, YAxis::Param);
-    let mut chart = chart_in(&plot_area, &data.value_key, data, y, (xs, ys))?;
+    let Some(y_axis) = data.y.as_ref() else {
+        return Err("the value map needs two swept options".into());
+    };
+    let mut chart = chart_in(
+        &plot_area,
+        &data.value_key,
+        data,
+        YAxis::Param(y_axis),
+        (xs, ys),
+    )?;
     let range = data.value_range();
     chart
         .draw_series(data.points.iter().map(|p| {
@@ -311,7 +366,7 @@ fn value_map_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> R
                     let s = if hi > lo { (v - lo) / (hi - lo) } else { 0.5 };
                     Style::Filled(colour_map(s))
                 }
-                _ if p.status == "completed" => Style::Hollow,
+                _ if p.completed() => Style::Hollow,
                 _ => key_style(&regime_key(p)),
             };
             point_element((p.x, p.y), style)
@@ -324,7 +379,7 @@ fn value_map_panel<DB: DrawingBackend>(area: &Area<DB>, data: &DiagramData) -> R
 fn colour_bar<DB: DrawingBackend>(
     area: &Area<DB>,
     range: Option<(f64, f64)>,
-) -> Result<(), String> {
+) -> Result<(), DrawError> {
     let (w, h) = area.dim_in_pixel();
     let (top, bottom) = (60i32, h as i32 - 60);
     let Some((lo, hi)) = range else {
@@ -350,40 +405,193 @@ fn colour_bar<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The right panel of a one-parameter sweep: the chosen value against the swept option.
+/// A curve of a line plot: its legend label, its points (x position, value), colour and marker.
+struct Series {
+    label: String,
+    points: Vec<(f64, f64)>,
+    colour: Rgb,
+    marker: Marker,
+}
+
+/// The marker of a curve's points.
+#[derive(Clone, Copy)]
+enum Marker {
+    Circle,
+    Triangle,
+}
+
+/// A line plot of curves against the x option, with a legend column; `note` is shown when no
+/// curve has a point.
+fn curves_panel<DB: DrawingBackend>(
+    area: &Area<DB>,
+    caption: &str,
+    y_title: &str,
+    data: &DiagramData,
+    curves: &[Series],
+) -> Result<(), DrawError> {
+    let (plot_area, legend_area) = area.split_horizontally(area.dim_in_pixel().0 - LEGEND_WIDTH);
+    let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
+    let vs = span(
+        None,
+        curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)),
+    );
+    let mut chart = chart_in(&plot_area, caption, data, YAxis::Value(y_title), (xs, vs))?;
+    if curves.iter().all(|c| c.points.is_empty()) {
+        no_values_note(&plot_area, y_title)?;
+    }
+    for c in curves {
+        let colour = rgb(c.colour);
+        chart
+            .draw_series(LineSeries::new(c.points.clone(), colour.stroke_width(2)))
+            .map_err(err)?;
+        match c.marker {
+            Marker::Circle => chart
+                .draw_series(c.points.iter().map(|&p| Circle::new(p, 4, colour.filled())))
+                .map_err(err)?,
+            Marker::Triangle => chart
+                .draw_series(
+                    c.points
+                        .iter()
+                        .map(|&p| TriangleMarker::new(p, 5, colour.filled())),
+                )
+                .map_err(err)?,
+        };
+    }
+    for (i, c) in curves.iter().enumerate() {
+        let y = 70 + 24 * i as i32;
+        let colour = rgb(c.colour);
+        match c.marker {
+            Marker::Circle => legend_area.draw(&Circle::new((12, y), 5, colour.filled())),
+            Marker::Triangle => legend_area.draw(&TriangleMarker::new((12, y), 6, colour.filled())),
+        }
+        .map_err(err)?;
+        legend_area
+            .draw(&Text::new(
+                c.label.clone(),
+                (26, y - 8),
+                (FONT, 14).into_font(),
+            ))
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// "no case has a value of KEY (yet)", in the middle of a panel.
+fn no_values_note<DB: DrawingBackend>(area: &Area<DB>, key: &str) -> Result<(), DrawError> {
+    let (w, h) = area.dim_in_pixel();
+    let note = format!("no case has a value of {key} (yet)");
+    let style = (FONT, 15)
+        .into_font()
+        .color(&BLACK)
+        .pos(Pos::new(HPos::Center, VPos::Center));
+    area.draw(&Text::new(note, (w as i32 / 2, h as i32 / 2), style))
+        .map_err(err)
+}
+
+/// The completed cases' (x, value) of `value`, in order of x.
+fn curve(points: &[&Point], value: impl Fn(&Point) -> Option<f64>) -> Vec<(f64, f64)> {
+    let mut pts: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|p| p.completed())
+        .filter_map(|p| value(p).map(|v| (p.x, v)))
+        .collect();
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    pts
+}
+
+/// Static plates: the mean C_L and C_D against the x option (one pair of curves per y value).
+fn coefficient_panel<DB: DrawingBackend>(
+    area: &Area<DB>,
+    data: &DiagramData,
+) -> Result<(), DrawError> {
+    let mut groups: Vec<f64> = data.points.iter().map(|p| p.y).collect();
+    groups.sort_by(f64::total_cmp);
+    groups.dedup();
+    let mut curves = Vec::new();
+    for (k, &y) in groups.iter().enumerate() {
+        let members: Vec<&Point> = data.points.iter().filter(|p| p.y == y).collect();
+        let shade = |base: Rgb| match data.y {
+            Some(_) if groups.len() > 1 => colour_map(k as f64 / (groups.len() - 1) as f64),
+            _ => base,
+        };
+        let suffix = match &data.y {
+            Some(a) => format!(", {} = {}", a.name, a.label(y)),
+            None => String::new(),
+        };
+        curves.push(Series {
+            label: format!("C_L{suffix}"),
+            points: curve(&members, |p| p.mean_cl),
+            colour: shade((31, 119, 180)),
+            marker: Marker::Circle,
+        });
+        curves.push(Series {
+            label: format!("C_D{suffix}"),
+            points: curve(&members, |p| p.mean_cd),
+            colour: shade((214, 39, 40)),
+            marker: Marker::Triangle,
+        });
+    }
+    let caption = format!("mean C_L and C_D against {}", data.x.name);
+    curves_panel(area, &caption, "mean coefficient", data, &curves)
+}
+
+/// The right panel of a one-option sweep of static plates: the chosen value against the option.
 fn value_curve_panel<DB: DrawingBackend>(
     area: &Area<DB>,
     data: &DiagramData,
-) -> Result<(), String> {
-    let mut pts: Vec<(f64, f64)> = data
-        .points
-        .iter()
-        .filter_map(|p| p.shown_value().map(|v| (p.x, v)))
-        .collect();
-    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+) -> Result<(), DrawError> {
+    let all: Vec<&Point> = data.points.iter().collect();
+    let curves = [Series {
+        label: data.value_key.clone(),
+        points: curve(&all, |p| p.value),
+        colour: (31, 119, 180),
+        marker: Marker::Circle,
+    }];
+    let caption = format!("{} against {}", data.value_key, data.x.name);
+    curves_panel(area, &caption, &data.value_key, data, &curves)
+}
+
+/// A one-option sweep of moving plates: the chosen value against the option, a line through
+/// the completed cases with each case's marker coloured by its regime (failed and missing cases
+/// marked on the lower edge).
+fn regime_curve_panel<DB: DrawingBackend>(
+    area: &Area<DB>,
+    data: &DiagramData,
+) -> Result<(), DrawError> {
+    let (plot_area, legend_area) = area.split_horizontally(area.dim_in_pixel().0 - LEGEND_WIDTH);
+    let all: Vec<&Point> = data.points.iter().collect();
+    let line = curve(&all, |p| p.value);
     let xs = span(Some(&data.x), data.points.iter().map(|p| p.x));
-    let vs = span(None, pts.iter().map(|p| p.1));
+    let vs = span(None, line.iter().map(|p| p.1));
+    let caption = format!("{} against {}", data.value_key, data.x.name);
     let y = YAxis::Value(&data.value_key);
-    let mut chart = chart_in(area, &data.value_key, data, y, (xs, vs))?;
-    if pts.is_empty() {
-        let (w, h) = area.dim_in_pixel();
-        let note = format!("no case has a value of {} (yet)", data.value_key);
-        let style = (FONT, 15)
-            .into_font()
-            .color(&BLACK)
-            .pos(Pos::new(HPos::Center, VPos::Center));
-        area.draw(&Text::new(note, (w as i32 / 2, h as i32 / 2), style))
-            .map_err(err)?;
+    let mut chart = chart_in(&plot_area, &caption, data, y, (xs, vs))?;
+    if line.is_empty() {
+        no_values_note(&plot_area, &data.value_key)?;
     }
-    let line = rgb((31, 119, 180));
     chart
-        .draw_series(LineSeries::new(pts.clone(), line.stroke_width(2)))
+        .draw_series(LineSeries::new(
+            line,
+            RGBColor(170, 170, 170).stroke_width(2),
+        ))
         .map_err(err)?;
-    chart
-        .draw_series(
-            pts.iter()
-                .map(|&(x, v)| Circle::new((x, v), 4, line.filled())),
-        )
-        .map_err(err)?;
-    Ok(())
+    let mut entries = Vec::new();
+    for key in regime_keys(data) {
+        let pts: Vec<&Point> = data
+            .points
+            .iter()
+            .filter(|p| regime_key(p) == key)
+            .collect();
+        if pts.is_empty() {
+            continue;
+        }
+        let style = key_style(&key);
+        // A case without a value sits on the lower edge, so that it is still seen.
+        let at = |p: &Point| (p.x, p.shown_value().unwrap_or(vs.0));
+        chart
+            .draw_series(pts.iter().map(|p| point_element(at(p), style)))
+            .map_err(err)?;
+        entries.push((format!("{key} ({})", pts.len()), style));
+    }
+    legend(&legend_area, &entries)
 }

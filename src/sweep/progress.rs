@@ -5,8 +5,21 @@ use std::time::Duration;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use super::args::ProgressMode;
 use super::child::CaseStatus;
+use platefall_post::phase::CaseState;
+
+/// How progress is shown on stderr.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ProgressMode {
+    /// A bar on a terminal, one line per finished case otherwise.
+    Auto,
+    /// Always the bar.
+    Bar,
+    /// One line per finished case.
+    Lines,
+    /// Nothing.
+    Off,
+}
 
 /// The sweep's progress on stderr.
 pub struct Progress {
@@ -77,10 +90,10 @@ impl Progress {
     }
 
     /// A case ended (`status` as recorded, `outcome` its sweep status).
-    pub fn finished(&mut self, id: &str, outcome: &str, status: &CaseStatus) {
+    pub fn finished(&mut self, id: &str, outcome: CaseState, status: &CaseStatus) {
         self.running = self.running.saturating_sub(1);
         self.done += 1;
-        if outcome != "completed" {
+        if outcome != CaseState::Completed {
             self.not_completed += 1;
         }
         let secs = status.elapsed_seconds.unwrap_or(0.0);
@@ -90,7 +103,7 @@ impl Progress {
             self.total,
             w = self.total.to_string().len()
         );
-        if outcome != "completed" {
+        if outcome != CaseState::Completed {
             let code = status
                 .exit_code
                 .map_or_else(|| "none".to_string(), |c| c.to_string());

@@ -7,18 +7,19 @@ use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::Value as Json;
 
 use super::child::{read_status, summary_status, CaseStatus};
-use super::fsutil::write_output;
+use super::failure::{write_output, Failure};
 use super::json::{self, Object};
 use super::layout::Layout;
 use super::plan::CaseSpec;
-use super::Failure;
+use platefall_core::sim::StatusKind;
+use platefall_post::phase::CaseState;
 
 /// One case in the merged table.
 #[derive(Clone, Debug)]
 pub struct Row {
     pub case: CaseSpec,
-    /// completed, diverged, interrupted, failed, unfinished (started, no result) or missing.
-    pub status: &'static str,
+    /// How the case stands.
+    pub status: CaseState,
     pub exit_code: Option<i32>,
     pub message: String,
     /// The case's recording, if it has one.
@@ -28,34 +29,34 @@ pub struct Row {
 }
 
 /// A case's sweep status from its summary and its `status.json`.
-pub fn outcome(layout: &Layout, id: &str, status: Option<&CaseStatus>) -> &'static str {
+pub fn outcome(layout: &Layout, id: &str, status: Option<&CaseStatus>) -> CaseState {
     let summary = summary_status(layout, id);
-    match (summary.as_deref(), status) {
-        (Some("completed"), _) => "completed",
-        (Some("diverged"), _) => "diverged",
+    match (summary, status) {
+        (Some(StatusKind::Completed), _) => CaseState::Completed,
+        (Some(StatusKind::Diverged), _) => CaseState::Diverged,
         // Exit 130 after Ctrl-C, or killed by SIGINT before its handler was installed.
         (_, Some(s))
             if s.state == "exited" && (s.exit_code == Some(130) || s.signal == Some(2)) =>
         {
-            "interrupted"
+            CaseState::Interrupted
         }
-        (_, Some(s)) if s.state == "exited" => "failed",
-        (Some("interrupted"), _) => "interrupted",
-        (_, Some(_)) => "unfinished",
-        (_, None) => "missing",
+        (_, Some(s)) if s.state == "exited" => CaseState::Failed,
+        (Some(StatusKind::Interrupted), _) => CaseState::Interrupted,
+        (_, Some(_)) => CaseState::Unfinished,
+        (_, None) => CaseState::Missing,
     }
 }
 
 /// Why a case has no result, in one line.
-fn explain(state: &str, status: Option<&CaseStatus>) -> String {
+fn explain(state: CaseState, status: Option<&CaseStatus>) -> String {
     match (state, status) {
-        ("missing", _) => "not run yet".into(),
-        ("unfinished", Some(s)) => format!(
+        (CaseState::Missing, _) => "not run yet".into(),
+        (CaseState::Unfinished, Some(s)) => format!(
             "attempt {} started {} on {} (pid {}) and left no result: still running, or killed (e.g. a time limit)",
             s.attempt, s.started, s.host, s.pid
         ),
         (_, Some(s)) if !s.message.is_empty() => s.message.clone(),
-        ("diverged", _) => "the solution diverged".into(),
+        (CaseState::Diverged, _) => "the solution diverged".into(),
         _ => String::new(),
     }
 }
@@ -112,7 +113,7 @@ fn record(layout: &Layout, r: &Row, keys: &[String]) -> Object {
             .to_string_lossy()
             .into_owned()
     });
-    out.push(("status".into(), Json::from(r.status)));
+    out.push(("status".into(), Json::from(r.status.name())));
     out.push((
         "exit_code".into(),
         r.exit_code.map_or(Json::Null, Json::from),
@@ -185,15 +186,7 @@ pub fn write_tables(layout: &Layout, rows: &[Row]) -> Result<(), Failure> {
 
 /// Counts of each status, in a fixed order, for the closing line.
 pub fn tally(rows: &[Row]) -> String {
-    let order = [
-        "completed",
-        "diverged",
-        "failed",
-        "interrupted",
-        "unfinished",
-        "missing",
-    ];
-    let parts: Vec<String> = order
+    let parts: Vec<String> = CaseState::ALL
         .iter()
         .filter_map(|s| {
             let n = rows.iter().filter(|r| r.status == *s).count();
@@ -206,7 +199,7 @@ pub fn tally(rows: &[Row]) -> String {
 /// One line per case that did not complete: its id, status, exit code and why.
 pub fn not_completed(rows: &[Row]) -> Vec<String> {
     rows.iter()
-        .filter(|r| r.status != "completed")
+        .filter(|r| r.status != CaseState::Completed)
         .map(|r| {
             let code = r
                 .exit_code

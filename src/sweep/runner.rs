@@ -7,11 +7,12 @@ use std::sync::Arc;
 use std::time::Duration;
 
 use super::child::{finish, interrupt, launch, launch_failed, Running};
+use super::failure::Failure;
 use super::layout::Layout;
 use super::plan::CaseSpec;
 use super::progress::Progress;
 use super::results::outcome;
-use super::Failure;
+use platefall_post::phase::CaseState;
 
 /// How often running cases are polled.
 const POLL: Duration = Duration::from_millis(50);
@@ -52,7 +53,7 @@ pub fn run_pool(
                 Err(e) => {
                     let status = launch_failed(layout, case, &e);
                     progress.started();
-                    progress.finished(&case.id, "failed", &status);
+                    progress.finished(&case.id, CaseState::Failed, &status);
                 }
             }
         }

@@ -1,13 +1,26 @@
 //! `--slurm`: a job-array script with one task per case not yet done; each task runs
 //! `platefall sweep run-case DIR INDEX` with this executable's absolute path, so the cluster fills
 //! the same directory a local sweep would.
-use super::args::SlurmFlags;
-use super::child::is_done;
-use super::commands::this_exe;
-use super::fsutil::write_output;
+use super::child::{is_done, this_exe};
+use super::failure::{write_output, Failure};
 use super::layout::{prepare, Layout};
-use super::plan::{CaseSpec, Plan, SlurmPlan};
-use super::Failure;
+use super::plan::{check_slurm, CaseSpec, Plan, SlurmPlan};
+use crate::exit::Exit;
+
+/// Resources of each array task given on the command line (they override the plan's).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct SlurmOverrides {
+    /// Partition to submit to.
+    pub(crate) partition: Option<String>,
+    /// Wall-time limit per case, as sbatch takes it.
+    pub(crate) time: Option<String>,
+    /// Memory per case, as sbatch takes it.
+    pub(crate) mem: Option<String>,
+    /// CPUs per case.
+    pub(crate) cpus: Option<u32>,
+    /// At most this many array tasks at once.
+    pub(crate) max_parallel: Option<u32>,
+}
 
 /// Resources when neither the plan nor a flag gives them.
 const DEFAULT_TIME: &str = "01:00:00";
@@ -16,7 +29,7 @@ const DEFAULT_MEMORY: &str = "2G";
 const DEFAULT_MAX_ARRAY_INDEX: usize = 1000;
 
 /// The plan's resources overridden by the flags.
-fn resources(plan: &SlurmPlan, flags: &SlurmFlags) -> SlurmPlan {
+fn resources(plan: &SlurmPlan, flags: &SlurmOverrides) -> SlurmPlan {
     SlurmPlan {
         time: flags.time.clone().or_else(|| plan.time.clone()),
         memory: flags.mem.clone().or_else(|| plan.memory.clone()),
@@ -139,13 +152,13 @@ pub fn submit_script(
     layout: &Layout,
     plan: &Plan,
     cases: &[CaseSpec],
-    flags: &SlurmFlags,
-) -> Result<u8, Failure> {
+    flags: &SlurmOverrides,
+) -> Result<Exit, Failure> {
     let res = resources(&plan.slurm, flags);
-    super::plan::check_slurm(&res).map_err(Failure::input)?;
+    check_slurm(&res)?;
     let exe = this_exe()?;
     std::fs::create_dir_all(layout.slurm_logs()).map_err(|e| {
-        Failure::output(format!(
+        Failure::input(format!(
             "cannot create {}: {e}",
             layout.slurm_logs().display()
         ))
@@ -163,7 +176,7 @@ pub fn submit_script(
             layout.dir.display(),
             layout.dir.display()
         );
-        return Ok(0);
+        return Ok(Exit::Completed);
     }
     let text = script(layout, plan, &todo, &res, &exe.to_string_lossy());
     write_output(&path, text.as_bytes())?;
@@ -186,7 +199,7 @@ pub fn submit_script(
         quote(&exe.to_string_lossy()),
         quote(&layout.dir.to_string_lossy())
     );
-    Ok(0)
+    Ok(Exit::Completed)
 }
 
 #[cfg(test)]

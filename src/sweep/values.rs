@@ -2,6 +2,9 @@
 //! value is written on a command line and in a case id.
 use serde::{Deserialize, Serialize};
 
+use super::plan::{plan_err, PlanError};
+pub(crate) use platefall_post::phase::Scale;
+
 /// One value of an option, as written in the plan.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
@@ -51,14 +54,14 @@ impl Value {
     }
 
     /// A plan value: a boolean, integer, float or string (`what` names it in errors).
-    pub fn from_toml(v: &toml::Value, what: &str) -> Result<Value, String> {
+    pub fn from_toml(v: &toml::Value, what: &str) -> Result<Value, PlanError> {
         match v {
             toml::Value::Boolean(b) => Ok(Value::Bool(*b)),
             toml::Value::Integer(i) => Ok(Value::Int(*i)),
             toml::Value::Float(x) if x.is_finite() => Ok(Value::Float(*x)),
-            toml::Value::Float(x) => Err(format!("{what} = {x}: not a finite number")),
+            toml::Value::Float(x) => Err(plan_err!("{what} = {x}: not a finite number")),
             toml::Value::String(s) => Ok(Value::Text(s.clone())),
-            other => Err(format!(
+            other => Err(plan_err!(
                 "{what} is {}: accepted a number, a string or true/false",
                 describe(other)
             )),
@@ -69,15 +72,6 @@ impl Value {
 /// Rounds to [`RANGE_DIGITS`] significant digits (the nearest double to that decimal).
 fn tidy(x: f64) -> f64 {
     format!("{:.*e}", RANGE_DIGITS - 1, x).parse().unwrap_or(x)
-}
-
-/// Spacing of a range.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum Scale {
-    #[default]
-    Linear,
-    Log,
 }
 
 /// `{ from = A, to = B, count = N, scale = "linear" | "log" }` in a plan.
@@ -92,11 +86,11 @@ struct RangeSpec {
 }
 
 /// The values of a swept option: a list, or a range table. `what` names it in errors.
-pub fn expand(v: &toml::Value, what: &str) -> Result<(Vec<Value>, Scale), String> {
+pub fn expand(v: &toml::Value, what: &str) -> Result<(Vec<Value>, Scale), PlanError> {
     match v {
         toml::Value::Array(items) => {
             if items.is_empty() {
-                return Err(format!(
+                return Err(plan_err!(
                     "{what} = []: an empty list (accepted: one value or more)"
                 ));
             }
@@ -108,14 +102,14 @@ pub fn expand(v: &toml::Value, what: &str) -> Result<(Vec<Value>, Scale), String
         }
         toml::Value::Table(t) => {
             let spec: RangeSpec = t.clone().try_into().map_err(|e: toml::de::Error| {
-                format!(
+                plan_err!(
                     "{what}: {} (a range is {{ from = A, to = B, count = N, scale = \"linear\" | \"log\" }})",
                     one_line(e.message())
                 )
             })?;
             Ok((range(&spec, what)?, spec.scale))
         }
-        other => Err(format!(
+        other => Err(plan_err!(
             "{what} is {}: a swept option takes a list [a, b, ...] or a range {{ from = A, to = B, count = N }}",
             describe(other)
         )),
@@ -123,26 +117,27 @@ pub fn expand(v: &toml::Value, what: &str) -> Result<(Vec<Value>, Scale), String
 }
 
 /// The values of a range, checked.
-fn range(r: &RangeSpec, what: &str) -> Result<Vec<Value>, String> {
+fn range(r: &RangeSpec, what: &str) -> Result<Vec<Value>, PlanError> {
     if r.count < 1 {
-        return Err(format!(
+        return Err(plan_err!(
             "{what}: count = {} is out of range: accepted 1 or more",
             r.count
         ));
     }
     if r.count > 100_000 {
-        return Err(format!(
+        return Err(plan_err!(
             "{what}: count = {} is out of range: accepted at most 100000",
             r.count
         ));
     }
     if !r.from.is_finite() || !r.to.is_finite() {
-        return Err(format!("{what}: from and to must be finite numbers"));
+        return Err(plan_err!("{what}: from and to must be finite numbers"));
     }
     if r.scale == Scale::Log && (r.from <= 0.0 || r.to <= 0.0) {
-        return Err(format!(
+        return Err(plan_err!(
             "{what}: a log range needs from > 0 and to > 0 (got from = {}, to = {})",
-            r.from, r.to
+            r.from,
+            r.to
         ));
     }
     let n = r.count as usize;

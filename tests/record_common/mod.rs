@@ -8,7 +8,8 @@ use std::sync::Arc;
 
 use platefall_core::flow::Frame;
 use platefall_core::grid::GridGeometry;
-use platefall_core::sim::{FieldSnapshot, StepSample};
+use platefall_core::sim::{CaseKind, FieldSnapshot, StepSample};
+use platefall_post::{default_wake_window, ViewDefaults};
 use platefall_record::messages::RunInfo;
 use rerun::external::re_log_encoding::DecoderApp;
 use rerun::log::{Chunk, LogMsg};
@@ -65,16 +66,27 @@ pub fn grid(nx: usize, ny: usize, thickness: f64) -> GridGeometry {
     GridGeometry { xn, yn, solid }
 }
 
-pub fn run_info(grid: GridGeometry) -> RunInfo {
+/// A synthetic free fall's run information; its end time `t_end` (None: unknown).
+pub fn run_info_until(grid: GridGeometry, t_end: Option<f64>) -> RunInfo {
     RunInfo {
-        case: "free".into(),
+        case: CaseKind::Free,
         title: "synthetic free fall (test)".into(),
         config_json: "{\n  \"case\": \"free\",\n  \"re\": 4770\n}".into(),
         command_line: "platefall free --synthetic".into(),
         version: "0.1.0-test".into(),
         thickness: 0.0625,
         grid: Arc::new(grid),
+        view: ViewDefaults {
+            wake_window: default_wake_window(CaseKind::Free),
+            plot_ranges: None,
+        },
+        t_end,
     }
+}
+
+/// A synthetic free fall's run information, its end time unknown.
+pub fn run_info(grid: GridGeometry) -> RunInfo {
+    run_info_until(grid, None)
 }
 
 /// A tumbling fall: the centre drifts right and down, θ grows at ~1.6 per time unit.

@@ -146,6 +146,9 @@ pub enum InputError {
     /// A coupled case without plate properties.
     #[error("a coupled case needs plate properties")]
     MissingPlate,
+    /// A value the run needs and nothing gave; `why` says when it is needed.
+    #[error("the {} is required {why}", .param.describe())]
+    Missing { param: Param, why: &'static str },
 }
 
 impl InputError {
@@ -155,6 +158,7 @@ impl InputError {
             InputError::OutOfRange { param, .. } | InputError::Inconsistent { param, .. } => {
                 Some(*param)
             }
+            InputError::Missing { param, .. } => Some(*param),
             InputError::MissingPlate => None,
         }
     }
@@ -190,5 +194,40 @@ pub fn check_whole(param: Param, value: usize, lo: usize, hi: usize) -> Result<(
             value: value as f64,
             accepted: Accepted::Whole { lo, hi },
         })
+    }
+}
+
+/// A number for titles and messages: at most four significant digits, trailing zeros dropped
+/// (`0.9853981633974482` → `0.9854`, `4770.3` → `4770`, `0.2` → `0.2`).
+pub fn rounded(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let magnitude = x.abs().log10().floor() as i32;
+    if !(-4..6).contains(&magnitude) {
+        return format!("{x:.3e}");
+    }
+    let decimals = (3 - magnitude).max(0) as usize;
+    let text = format!("{x:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounded_keeps_four_significant_digits() {
+        assert_eq!(rounded(0.9853981633974482), "0.9854");
+        assert_eq!(rounded(-std::f64::consts::FRAC_PI_4), "-0.7854");
+        assert_eq!(rounded(0.2), "0.2");
+        assert_eq!(rounded(4770.33), "4770");
+        assert_eq!(rounded(5000.0), "5000");
+        assert_eq!(rounded(0.0), "0");
+        assert_eq!(rounded(2.5e-7), "2.500e-7");
     }
 }

@@ -19,19 +19,24 @@
 //! - [`painter`]: [`FieldPainter`] puts it together: one call turns a snapshot into the three
 //!   images (vorticity, pressure, speed) and the streamlines, with all interpolation weights
 //!   precomputed once per run.
+//! - [`phase`]: a sweep's phase diagram as data (cases placed by swept options, their regimes
+//!   and a chosen value), drawn by the sweep's figure and the recording crate.
 //! - [`wake`]: the same three fields over a long window that follows the plate along its path
 //!   ([`WakePainter`], [`PathHeading`]).
 //! - [`plot_range`]: the value ranges the viewer's plots open on ([`PlotRanges`]), chosen from
-//!   the case so that the developed motion fills them and the start-up spike lies outside.
+//!   the case so that the developed motion fills them and the start-up spike lies outside;
+//!   [`view`]: those and the wake window, the viewer's defaults of a run ([`ViewDefaults`]).
 pub mod analysis;
 pub mod contour;
 pub mod fields;
 pub mod painter;
+pub mod phase;
 pub mod plot_range;
 pub mod regime;
 pub mod report;
 pub mod resample;
 pub mod summary;
+pub mod view;
 pub mod wake;
 
 pub use contour::{isolines, simplify_polyline, Polyline};
@@ -42,4 +47,5 @@ pub use fields::{
 pub use painter::{FieldPainter, PaintedFields, PainterOptions};
 pub use plot_range::PlotRanges;
 pub use resample::{bilinear, bilinear_at_points, AxisWeights, FieldWindow, ImageGrid};
+pub use view::ViewDefaults;
 pub use wake::{default_wake_window, PathHeading, WakeImages, WakePainter};

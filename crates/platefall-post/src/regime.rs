@@ -38,7 +38,7 @@ pub const REGULAR_CV: f64 = 0.25;
 pub const MIN_CYCLES: usize = 2;
 
 /// The motion regimes of a falling plate (rule in the module docs).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Regime {
     Steady,
@@ -50,6 +50,16 @@ pub enum Regime {
 }
 
 impl Regime {
+    /// Every regime, in the order of the rule.
+    pub const ALL: [Regime; 5] = [
+        Regime::Steady,
+        Regime::Fluttering,
+        Regime::Tumbling,
+        Regime::Chaotic,
+        Regime::Undetermined,
+    ];
+
+    /// The name summaries write: `steady`, `fluttering`, `tumbling`, `chaotic`, `undetermined`.
     pub fn name(self) -> &'static str {
         match self {
             Regime::Steady => "steady",

@@ -2,6 +2,7 @@
 //! comparison with the seed's reference results (SPEC §8).
 use std::f64::consts::PI;
 
+use super::regime::Regime;
 use super::summary::Summary;
 use platefall_core::sim::{Case, RunConfig};
 
@@ -40,7 +41,7 @@ fn header(config: &RunConfig, sum: &Summary) -> String {
         config.title(),
         sum.status,
         sum.steps,
-        sum.t_end,
+        sum.t_reached,
         sum.wall_seconds,
         sum.cells,
         1e9 * sum.wall_seconds / (sum.steps.max(1) as f64 * sum.cells as f64),
@@ -179,7 +180,7 @@ fn fall_part(sum: &Summary) -> String {
     let mut text = format!(
         "regime {} (judged from t = {}): period {}{}{}, angle amplitude {} rad\n\
          mean descent speed {}{}, horizontal drift {}{}, descent angle {} rad\n",
-        f.regime.as_deref().unwrap_or("—"),
+        f.regime.map_or("—", Regime::name),
         fmt_opt(f.regime_from, 2),
         fmt_opt(f.period, 3),
         unit(p.period_s, "s", 3),

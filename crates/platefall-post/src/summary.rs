@@ -7,23 +7,27 @@ use std::f64::consts::PI;
 use serde::Serialize;
 
 use super::analysis::{count_turns, dominant_frequency, whole_periods, TimeWindow};
-use super::regime::{classify, regime_window, MotionClass};
+use super::regime::{classify, regime_window, MotionClass, Regime};
 use platefall_core::config::{physical, Units};
-use platefall_core::sim::{Case, History, Quantity, RunConfig, RunRecord, StepSample};
+use platefall_core::sim::{
+    Case, CaseKind, History, Quantity, RunConfig, RunRecord, StatusKind, StepSample,
+};
 
 /// Peak-to-peak C_L below which the flow counts as steady (no Strouhal number).
 pub const STEADY_BAND: f64 = 0.02;
 
-#[derive(Clone, Debug, Default, Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct Summary {
-    pub case: String,
-    pub status: String,
+    pub case: CaseKind,
+    pub status: StatusKind,
     pub re: f64,
     pub resolution: usize,
     pub cells: usize,
     pub steps: u64,
-    /// Convective time reached.
-    pub t_end: f64,
+    /// The convective time the run reached (its end time when it completed by reaching it; the
+    /// JSON key is `t_end`).
+    #[serde(rename = "t_end")]
+    pub t_reached: f64,
     pub wall_seconds: f64,
     /// The developed part the means are taken over, and how it was chosen.
     pub developed_from: Option<f64>,
@@ -65,7 +69,7 @@ pub struct Summary {
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct FallKeys {
     /// steady, fluttering, tumbling, chaotic or undetermined.
-    pub regime: Option<String>,
+    pub regime: Option<Regime>,
     pub regime_rule: Option<String>,
     /// Start of the window the regime is judged on (it ends with the run).
     pub regime_from: Option<f64>,
@@ -269,7 +273,7 @@ fn fall_keys(
         .map(|v| -v);
     let drift = w.and_then(|w| h.mean(Quantity::Xdot, w.t0, w.t1));
     FallKeys {
-        regime: Some(class.regime.name().into()),
+        regime: Some(class.regime),
         regime_rule: Some(
             "second half after release: steady if |θ − mid| ≤ 0.02 rad; runs of θ between \
              reversals of 0.1 rad counted as full turns; turns of both signs chaotic; one sign \
@@ -324,19 +328,37 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
     let motion = motion_of(config, rec);
     let (w, rule, established) = developed(config, rec, freq, motion.as_ref());
     let mut sum = Summary {
-        case: config.case.name().into(),
-        status: rec.status.name().into(),
+        case: config.case.kind(),
+        status: rec.status.kind(),
         re: config.flow.re,
         resolution: config.grid.resolution,
         cells: rec.cells,
         steps: h.total_steps(),
-        t_end: last_t,
+        t_reached: last_t,
         wall_seconds,
         developed_from: w.map(|w| w.t0),
         developed_to: w.map(|w| w.t1),
         developed_rule: rule,
+        mean_cl: None,
+        mean_cd: None,
+        mean_cm: None,
+        max_cl: None,
+        min_cl: None,
+        max_cd: None,
+        strouhal_chord: None,
+        strouhal_width: None,
+        mean_speed: None,
+        mean_omega: None,
+        mean_gamma: None,
+        revolutions: None,
         autorotation_time: established,
-        ..Summary::default()
+        autorotation_rule: None,
+        lag_cd_behind_cl: None,
+        peak_cl_rotation: None,
+        mean_speed_ft_s: None,
+        mean_omega_rad_s: None,
+        fall: FallKeys::default(),
+        physical: PhysicalKeys::default(),
     };
     set_coefficients(&mut sum, config, h, w, freq);
     if !matches!(config.case, Case::Static { .. }) {

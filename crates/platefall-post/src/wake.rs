@@ -16,14 +16,14 @@ use std::sync::Arc;
 use super::fields::{cell_centres, SnapshotFields, StreamFrame};
 use super::resample::{bilinear_at_points, AxisWeights, FieldWindow, ImageGrid};
 use platefall_core::grid::GridGeometry;
-use platefall_core::sim::FieldSnapshot;
+use platefall_core::sim::{CaseKind, FieldSnapshot};
 
 /// The default wake window of a case (path frame, chords): 2 chords ahead and 8 behind, ±2.5
 /// across, for a plate translating steadily (static, forced); 2 ahead, 10 behind and ±3 across
 /// for an autorotating plate (pinned, free), whose wake is wider and whose turns (2.5–3 chords of
 /// path each) leave their vortices every few chords: 10 chords hold the last three to four turns.
-pub fn default_wake_window(case: &str) -> FieldWindow {
-    if matches!(case, "pinned" | "free") {
+pub fn default_wake_window(case: CaseKind) -> FieldWindow {
+    if case.is_coupled() {
         FieldWindow {
             x0: -10.0,
             x1: 2.0,

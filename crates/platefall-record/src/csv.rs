@@ -90,12 +90,14 @@ impl CsvWriter {
 
 /// The trailer line for a run that ended with `status` after `rows` rows, the last at time `t`.
 pub fn trailer(status: &RunStatus, rows: u64, t: f64) -> String {
-    let reason = match status {
-        RunStatus::Diverged(why) | RunStatus::OutputFailed(why) => {
-            format!(" reason={}", why.replace(['\n', '\r'], " "))
-        }
-        RunStatus::Completed | RunStatus::Interrupted => String::new(),
+    let why = match status {
+        RunStatus::Diverged(e) => Some(e.to_string()),
+        RunStatus::OutputFailed(why) => Some(why.clone()),
+        RunStatus::Completed | RunStatus::Interrupted => None,
     };
+    let reason = why.map_or(String::new(), |w| {
+        format!(" reason={}", w.replace(['\n', '\r'], " "))
+    });
     format!(
         "{CSV_TRAILER} status={} steps={rows} t={t}{reason}",
         status.name()

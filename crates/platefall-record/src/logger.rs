@@ -180,7 +180,7 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
     let thread = LoggerThread {
         rx,
         shared: shared.clone(),
-        progress: Progress::new(opts.progress, opts.t_end),
+        progress: Progress::new(opts.progress, info.t_end.unwrap_or(f64::NAN)),
         serve_url: opts.serve.as_ref().map(|s| s.url()),
         opts,
         csv,

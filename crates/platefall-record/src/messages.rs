@@ -5,13 +5,14 @@
 use std::sync::Arc;
 
 use platefall_core::grid::GridGeometry;
-use platefall_core::sim::{FieldSnapshot, RunStatus, StepSample};
+use platefall_core::sim::{CaseKind, FieldSnapshot, RunStatus, StepSample, ValidatedConfig};
+use platefall_post::ViewDefaults;
 
 /// Everything about a run that does not change while it runs; given when the logger starts.
 #[derive(Clone, Debug)]
 pub struct RunInfo {
-    /// "static" | "forced" | "pinned" | "free".
-    pub case: String,
+    /// Which case the run is.
+    pub case: CaseKind,
     /// One-line human description, e.g. "free fall, card preset, Re 4770, N=32".
     pub title: String,
     /// The full resolved configuration as pretty JSON (enough to reproduce the run).
@@ -25,6 +26,32 @@ pub struct RunInfo {
     pub thickness: f64,
     /// Body-fixed grid geometry shared by every field snapshot.
     pub grid: Arc<GridGeometry>,
+    /// The viewer's defaults for the run (wake window, plot ranges).
+    pub view: ViewDefaults,
+    /// The time the run ends at, when it is known beforehand (None when it stops after a number
+    /// of turns): the progress display's end and the length of the recording's curve segments.
+    pub t_end: Option<f64>,
+}
+
+impl RunInfo {
+    /// The information of a run of `config`, started by `command_line` of `version`.
+    pub fn new(config: &ValidatedConfig, command_line: String, version: String) -> RunInfo {
+        let grid = config.grid();
+        RunInfo {
+            case: config.case.kind(),
+            title: config.title(),
+            // (Cannot fail for plain data.)
+            config_json: serde_json::to_string_pretty(config).unwrap_or_default(),
+            command_line,
+            version,
+            thickness: grid.thickness,
+            grid: Arc::new(grid.geometry()),
+            view: ViewDefaults::of(config),
+            // A run that stops after a number of turns has no known end time: show no ETA rather
+            // than a wrong one.
+            t_end: config.time.turns.is_none().then_some(config.time.t_end),
+        }
+    }
 }
 
 /// How the run ended, with its summary; sent once, last.

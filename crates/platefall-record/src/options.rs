@@ -74,16 +74,15 @@ pub struct RecordOptions {
     pub streamlines_frame: StreamFrame,
     /// Per-step CSV output.
     pub csv: Option<PathBuf>,
+    /// How progress is shown on stderr.
     pub progress: ProgressMode,
-    /// End time of the run in convective units (for progress and ETA); 0 or non-finite if unknown.
-    pub t_end: f64,
     /// Capacity of the solver → logger channel in messages.
     pub channel_capacity: usize,
     /// At most this many field snapshots queued at once; more are skipped (and counted).
     pub max_fields_in_flight: usize,
     /// Convective time between the plate outlines of the strobe picture.
     pub strobe_every: f64,
-    /// The wake pictures and the plots' ranges.
+    /// The wake pictures.
     pub view: ViewOptions,
 }
 
@@ -100,7 +99,6 @@ impl Default for RecordOptions {
             streamlines_frame: StreamFrame::default(),
             csv: None,
             progress: ProgressMode::Off,
-            t_end: 0.0,
             channel_capacity: 1024,
             max_fields_in_flight: 4,
             strobe_every: 0.5,

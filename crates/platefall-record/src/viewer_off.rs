@@ -1,12 +1,13 @@
 //! Stand-in for the Rerun side of a recording when platefall is built without the `viewer`
 //! feature: nothing can be opened, so every sink option is refused before a run starts
 //! (`cli::record_args`), and the logger records CSV and progress only.
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use super::messages::{ConnectReport, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::output::OutputError;
 use platefall_core::sim::{FieldSnapshot, StepSample};
+use platefall_post::phase::DiagramData;
 
 /// This build cannot record for Rerun.
 pub const AVAILABLE: bool = false;
@@ -64,4 +65,12 @@ pub fn check_memory_limit(_limit: &str) -> Result<(), String> {
 
 pub fn check_proxy_url(_url: &str) -> Result<(), String> {
     Err("this build has no viewer".into())
+}
+
+/// A sweep's phase diagram as a recording: nothing is written in this build (`None`).
+pub fn write_phase_recording(
+    _path: &Path,
+    _data: &DiagramData,
+) -> Result<Option<(PathBuf, u64)>, OutputError> {
+    Ok(None)
 }

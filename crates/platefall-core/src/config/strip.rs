@@ -13,7 +13,7 @@
 //! fluid), I* = m*(1 + (t/c)²)/12 (a rectangle about its centre) and g* = g c/U².
 use super::fluid::Fluid;
 use crate::body::PlateProps;
-use crate::param::{check_range, InputError, Param};
+use crate::param::{check_range, rounded, InputError, Param};
 use crate::sim::ReferenceScales;
 
 /// A physical plate in a physical fluid (SI units).
@@ -25,6 +25,7 @@ pub struct Strip {
     pub thickness: f64,
     /// ρs (kg/m³).
     pub density: f64,
+    /// The fluid the plate falls through.
     pub fluid: Fluid,
     /// g (m/s²).
     pub gravity: f64,
@@ -109,6 +110,17 @@ impl Strip {
             });
         }
         Ok(())
+    }
+
+    /// A one-line description (the run's title): "10 × 0.5 mm plate of 2700 kg/m³ in water".
+    pub fn describe(&self) -> String {
+        format!(
+            "{} × {} mm plate of {} kg/m³ in {}",
+            rounded(self.chord * 1e3),
+            rounded(self.thickness * 1e3),
+            rounded(self.density),
+            self.fluid.name
+        )
     }
 
     /// The inputs and every derived parameter with its formula, one item a line.

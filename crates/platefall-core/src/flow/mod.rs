@@ -131,19 +131,34 @@ pub enum FlowError {
     /// The solution blew up at time `t` (after `step` steps); `reason` says what was seen.
     #[error("the flow solution diverged at t = {t:.4} (step {step}): {reason}")]
     Diverged { t: f64, step: u64, reason: String },
-    /// The solver could not be set up (the pressure operator, or the implicit zones).
+    /// The solver could not be set up.
     #[error("the flow solver could not be set up: {0}")]
-    Setup(String),
+    Setup(SetupError),
 }
 
+/// Why the flow solver could not be set up.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SetupError {
+    /// The pressure operator could not be assembled or factored; `reason` is the factorisation's
+    /// own message.
+    #[error("the pressure operator: {reason}")]
+    Pressure { reason: String },
+    /// A line of the implicit far field would cross the plate (its line solves know no wall
+    /// inside the domain): the near field must contain the plate.
+    #[error(transparent)]
+    NearField(zones::PlateCrossing),
+}
+
+/// The flow solver: the fields on the body-fixed grid and everything the step needs (see the
+/// module docs for the two phases of a step). Its state is read through accessors.
 pub struct FlowSolver {
-    pub grid: Grid,
-    pub params: FlowParams,
-    pub metrics: Metrics,
-    pub u: Padded,
-    pub v: Padded,
+    pub(crate) grid: Grid,
+    pub(crate) params: FlowParams,
+    pub(crate) metrics: Metrics,
+    pub(crate) u: Padded,
+    pub(crate) v: Padded,
     /// Pressure at cell centres (zero inside the plate), from the last projection.
-    pub p: Vec<f64>,
+    pub(crate) p: Vec<f64>,
     hu: Padded,
     hv: Padded,
     hu_old: Padded,
@@ -156,14 +171,14 @@ pub struct FlowSolver {
     zones: Zones,
     implicit: Option<Box<State>>,
     /// Motion of the plate at the current time level.
-    pub frame: Frame,
+    pub(crate) frame: Frame,
     /// Motion of the plate at the previous time level (`frame` before the first step); with
     /// `dt_prev` it gives the change of motion the last projection answered ([`AddedMass`]).
-    pub frame_prev: Frame,
+    pub(crate) frame_prev: Frame,
     /// Current time and the last step taken (0 before the first step).
-    pub t: f64,
-    pub dt_prev: f64,
-    pub steps: u64,
+    pub(crate) t: f64,
+    pub(crate) dt_prev: f64,
+    pub(crate) steps: u64,
     /// Convective rate max|w|/Δx from the last `prepare`.
     convective_rate: f64,
     dt_visc: f64,
@@ -180,7 +195,8 @@ impl FlowSolver {
         frame: Frame,
     ) -> Result<Self, FlowError> {
         let metrics = Metrics::new(&grid);
-        let pressure = Pressure::new(&grid, &metrics).map_err(|e| FlowError::Setup(e.0))?;
+        let pressure = Pressure::new(&grid, &metrics)
+            .map_err(|e| FlowError::Setup(SetupError::Pressure { reason: e.0 }))?;
         let nu = 1.0 / params.re;
         let wall = plate::wall_faces(&grid, &metrics, nu);
         let min_dx = grid.dx.iter().copied().fold(f64::INFINITY, f64::min);
@@ -407,6 +423,62 @@ impl FlowSolver {
         plate::coefficients(&self.loads, &self.frame)
     }
 
+    /// The body-fixed grid.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// The numerical parameters.
+    pub fn params(&self) -> &FlowParams {
+        &self.params
+    }
+
+    /// The grid's metrics (face and centre coordinates, spacings).
+    pub fn metrics(&self) -> &Metrics {
+        &self.metrics
+    }
+
+    /// The x-velocity on vertical faces, with its ghost layer.
+    pub fn u(&self) -> &Padded {
+        &self.u
+    }
+
+    /// The y-velocity on horizontal faces, with its ghost layer.
+    pub fn v(&self) -> &Padded {
+        &self.v
+    }
+
+    /// The pressure at cell centres (zero inside the plate), from the last projection; index
+    /// i + nx j.
+    pub fn p(&self) -> &[f64] {
+        &self.p
+    }
+
+    /// The plate's motion at the current time level.
+    pub fn frame(&self) -> &Frame {
+        &self.frame
+    }
+
+    /// The plate's motion at the previous time level.
+    pub fn frame_prev(&self) -> &Frame {
+        &self.frame_prev
+    }
+
+    /// The current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// The last step taken (0 before the first step).
+    pub fn dt_prev(&self) -> f64 {
+        self.dt_prev
+    }
+
+    /// Steps taken.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
     /// Largest |∇·u| over the fluid cells (flux divided by cell area).
     pub fn max_divergence(&self) -> f64 {
         let g = &self.grid;
@@ -449,7 +521,8 @@ fn far_field_state(
         FarFieldScheme::Explicit => Ok((Zones::none(grid), None)),
         FarFieldScheme::Implicit => {
             let z = Zones::new(grid, params.near_x, params.near_y);
-            z.check_plate(grid).map_err(FlowError::Setup)?;
+            z.check_plate(grid)
+                .map_err(|e| FlowError::Setup(SetupError::NearField(e)))?;
             let state = State::new(grid.nx, grid.ny, metrics);
             Ok((z, Some(Box::new(state))))
         }

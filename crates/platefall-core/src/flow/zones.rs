@@ -74,9 +74,9 @@ impl Zones {
         [(cols.start..a, true), (a..b, false), (b..cols.end, true)]
     }
 
-    /// The split lines must not cross the plate (their line solves know no interior wall): a
-    /// message naming the first offending line, if any.
-    pub fn check_plate(&self, grid: &Grid) -> Result<(), String> {
+    /// The split lines must not cross the plate (their line solves know no interior wall): the
+    /// first offending line, if any.
+    pub fn check_plate(&self, grid: &Grid) -> Result<(), PlateCrossing> {
         if !grid.has_plate() {
             return Ok(());
         }
@@ -86,11 +86,22 @@ impl Zones {
         let bad_u_row = (j0..j1).find(|&j| self.u_row[j]);
         let bad_v_row = (j0..=j1).find(|&j| self.v_row[j]);
         match (bad_u_col.or(bad_v_col), bad_u_row.or(bad_v_row)) {
-            (Some(i), _) => Err(format!("column {i} through the plate would be implicit")),
-            (_, Some(j)) => Err(format!("row {j} through the plate would be implicit")),
+            (Some(i), _) => Err(PlateCrossing::Column(i)),
+            (_, Some(j)) => Err(PlateCrossing::Row(j)),
             _ => Ok(()),
         }
     }
+}
+
+/// A grid line through the plate that the implicit far field would split.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, thiserror::Error)]
+pub enum PlateCrossing {
+    /// Column `i` (constant x).
+    #[error("column {0} through the plate would be implicit")]
+    Column(usize),
+    /// Row `j` (constant y).
+    #[error("row {0} through the plate would be implicit")]
+    Row(usize),
 }
 
 /// The contiguous range of unsplit indices (coordinates increase, so it is one range); when every

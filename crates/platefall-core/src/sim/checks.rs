@@ -2,13 +2,11 @@
 //! together (SPEC §1, §6): a run must outlast the plate's development (pinned, free) or spin-up
 //! (forced), or it ends before the case begins.
 use super::motion::Case;
-use super::spec::RunConfig;
 use crate::param::{InputError, Param};
 
-/// Refuses a development or spin-up that lasts the whole run.
-pub fn check_phases(config: &RunConfig) -> Result<(), InputError> {
-    let t_end = config.time.t_end;
-    let (param, value, what) = match config.case {
+/// Refuses a development or spin-up that lasts the whole run (ending at `t_end`).
+pub fn check_phases(case: &Case, t_end: f64) -> Result<(), InputError> {
+    let (param, value, what) = match *case {
         Case::Pinned { develop, .. } | Case::Free { develop, .. } => (
             Param::Develop,
             develop,
@@ -36,21 +34,15 @@ pub fn check_phases(config: &RunConfig) -> Result<(), InputError> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::grid::GridSpec;
 
     #[test]
     fn phases_longer_than_the_run_are_refused() {
-        let mut c = RunConfig::new(
-            Case::Forced {
-                omega: 1.0,
-                spinup: 3.0,
-            },
-            GridSpec::modern(8),
-        );
-        c.time.t_end = 2.0;
-        let e = check_phases(&c).unwrap_err();
+        let case = Case::Forced {
+            omega: 1.0,
+            spinup: 3.0,
+        };
+        let e = check_phases(&case, 2.0).unwrap_err();
         assert_eq!(e.param(), Some(Param::Spinup));
-        c.time.t_end = 4.0;
-        assert!(check_phases(&c).is_ok());
+        assert!(check_phases(&case, 4.0).is_ok());
     }
 }

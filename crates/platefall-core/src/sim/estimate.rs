@@ -11,10 +11,9 @@
 //! - peak resident memory ≈ 8 MB + 180 B per cell + 12 B per factor nonzero (an f64 value and a
 //!   u32 row index), plus 16 MB and 24 B per cell per queued field snapshot with a Rerun sink;
 //! - a step costs ≈ 120 ns per cell (`platefall bench`, README "Performance").
-use super::spec::RunConfig;
+use super::spec::ValidatedConfig;
 use crate::flow::FlowParams;
 use crate::grid::Grid;
-use crate::param::InputError;
 
 /// Fixed memory of the program without a recording (bytes).
 const BASE_BYTES: f64 = 8e6;
@@ -87,16 +86,16 @@ pub fn viscous_dt_limit(grid: &Grid, flow: &FlowParams) -> f64 {
     flow.visc_safety * flow.re / (4.0 * (1.0 / (dx * dx) + 1.0 / (dy * dy)))
 }
 
-/// Estimates a (validated) run's cost. Builds only the grid's coordinates.
-pub fn estimate(config: &RunConfig) -> Result<Estimate, InputError> {
-    let grid = Grid::new(&config.grid)?;
-    let visc = viscous_dt_limit(&grid, &config.flow);
+/// Estimates a run's cost from its description and grid (nothing else is built).
+pub fn estimate(config: &ValidatedConfig) -> Estimate {
+    let grid = config.grid();
+    let visc = viscous_dt_limit(grid, &config.flow);
     let (dt_floor, dt_floor_from) = if visc < config.time.dt_max {
         (visc, DtFloor::Viscous)
     } else {
         (config.time.dt_max, DtFloor::Ceiling)
     };
-    Ok(Estimate {
+    Estimate {
         nx: grid.nx,
         ny: grid.ny,
         cells: grid.nx as u64 * grid.ny as u64,
@@ -104,14 +103,14 @@ pub fn estimate(config: &RunConfig) -> Result<Estimate, InputError> {
         dt_floor,
         dt_floor_from,
         steps_min: (config.time.t_end / dt_floor).ceil(),
-    })
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::grid::GridSpec;
-    use crate::sim::Case;
+    use crate::sim::{Case, RunConfig};
 
     #[test]
     fn a_tiny_reynolds_number_implies_an_astronomical_step_count() {
@@ -122,12 +121,12 @@ mod tests {
             },
             GridSpec::modern(16),
         );
-        let e = estimate(&c).unwrap();
+        let e = estimate(&c.clone().validate().unwrap());
         assert_eq!((e.nx, e.ny, e.cells), (130, 115, 14950));
         assert_eq!(e.dt_floor_from, DtFloor::Ceiling);
         assert_eq!(e.steps_min, 8000.0);
         c.flow.re = 1e-300;
-        let e = estimate(&c).unwrap();
+        let e = estimate(&c.validate().unwrap());
         assert_eq!(e.dt_floor_from, DtFloor::Viscous);
         assert!(e.steps_min > 1e300, "{}", e.steps_min);
     }

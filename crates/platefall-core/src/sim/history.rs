@@ -16,7 +16,7 @@
 //! samples, which the history dereferences to (`&[StepSample]`, in time order).
 use std::ops::Deref;
 
-use super::output::StepSample;
+use super::sample::StepSample;
 
 /// Retained samples when none is given: ≈ 13 MB at most (32 768 × 408 bytes); runs up to this
 /// many steps keep every step.

@@ -13,31 +13,32 @@
 //! use platefall_core::sim::{Case, RunConfig, Simulation};
 //! let mut config = RunConfig::new(Case::Static { alpha: 0.4, kick: 0.0 }, GridSpec::modern(8));
 //! config.time.t_end = 0.05;
-//! let mut sim = Simulation::new(config)?;
+//! let mut sim = Simulation::new(config.validate()?)?;
 //! while !sim.finished() {
 //!     let sample = sim.step()?;
 //!     println!("t = {:.3}  C_D = {:.3}", sample.t, sample.cd);
 //! }
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
-pub mod checks;
+mod checks;
+mod error;
 pub mod estimate;
 pub mod history;
-pub mod motion;
-pub mod output;
-pub mod spec;
+mod motion;
+mod output;
+mod sample;
+mod spec;
 pub mod timestep;
 
+pub use error::SimError;
 pub use history::{History, Quantity};
-pub use motion::Case;
-pub use output::{FieldSnapshot, RunRecord, RunStatus, StepSample};
-pub use spec::{BodyConfig, ReferenceScales, RunConfig, TimeControl};
+pub use motion::{Case, CaseKind};
+pub use output::{FieldSnapshot, RunRecord, RunStatus, StatusKind};
+pub use sample::StepSample;
+pub use spec::{BodyConfig, PlateSource, ReferenceScales, RunConfig, TimeControl, ValidatedConfig};
 
-use crate::body::{
-    wrap_angle, AbError, BodyState, Coupling, Dof, InertialLoads, RigidBody, StrongCoupling,
-};
-use crate::flow::{AddedMass, FlowError, FlowSolver, OuterBc};
-use crate::grid::Grid;
+use crate::body::{wrap_angle, BodyState, Coupling, Dof, InertialLoads, RigidBody, StrongCoupling};
+use crate::flow::{AddedMass, FlowSolver, OuterBc};
 use crate::param::{InputError, Param};
 
 /// Receives the run as it happens.
@@ -52,25 +53,20 @@ pub trait Observer {
     fn should_stop(&self) -> bool;
 }
 
-/// Why a run could not be built or could not go on.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum SimError {
-    #[error(transparent)]
-    Input(#[from] InputError),
-    #[error(transparent)]
-    Flow(#[from] FlowError),
-    #[error(transparent)]
-    Body(#[from] AbError),
-    /// The plate's motion became non-finite.
-    #[error("the plate's motion is not finite at t = {t:.4}")]
-    MotionNotFinite { t: f64 },
-    /// The stable time step fell to round-off of t (the motion runs away, e.g. explicit coupling
-    /// of a light plate).
-    #[error(
-        "the time step fell to {dt:.3e} at t = {t:.4}: the motion runs away (as explicit \
-         coupling of a plate lighter than its added mass does)"
-    )]
-    StepCollapsed { t: f64, dt: f64 },
+/// An observer that wants nothing and never stops the run: [`Simulation::run`] then returns the
+/// run's [`RunRecord`] alone.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Silent;
+
+impl Observer for Silent {
+    fn step(&mut self, _: &StepSample) {}
+    fn wants_field(&mut self, _: f64) -> bool {
+        false
+    }
+    fn field(&mut self, _: FieldSnapshot) {}
+    fn should_stop(&self) -> bool {
+        false
+    }
 }
 
 /// The plate's motion law at run time.
@@ -89,20 +85,19 @@ enum Motion {
 
 /// A run: the flow, the plate and its motion law.
 pub struct Simulation {
-    pub config: RunConfig,
-    pub flow: FlowSolver,
-    pub state: BodyState,
+    config: RunConfig,
+    flow: FlowSolver,
+    state: BodyState,
     motion: Motion,
     /// θ at the release (coupled cases), for counting turns.
     theta_release: Option<f64>,
 }
 
 impl Simulation {
-    /// Validates the description, then builds the grid, the flow solver (fluid at rest) and the
-    /// motion law.
-    pub fn new(config: RunConfig) -> Result<Self, SimError> {
-        config.validate()?;
-        let grid = Grid::new(&config.grid)?;
+    /// Builds the flow solver (fluid at rest) on the validated description's grid, and the motion
+    /// law.
+    pub fn new(config: ValidatedConfig) -> Result<Self, SimError> {
+        let (config, grid) = config.into_parts();
         let state = config.case.prescribed_state(0.0);
         let mut flow =
             FlowSolver::new(grid, config.flow.clone(), OuterBc::FarField, state.frame())?;
@@ -135,6 +130,21 @@ impl Simulation {
             motion,
             theta_release: None,
         })
+    }
+
+    /// The run description.
+    pub fn config(&self) -> &RunConfig {
+        &self.config
+    }
+
+    /// The flow solver (its grid, fields, time and step count).
+    pub fn flow(&self) -> &FlowSolver {
+        &self.flow
+    }
+
+    /// The plate's state at the current time.
+    pub fn state(&self) -> &BodyState {
+        &self.state
     }
 
     /// The flow's added-mass matrix K when the run uses strong coupling.
@@ -293,7 +303,7 @@ impl Simulation {
                         break RunStatus::Completed;
                     }
                 }
-                Err(e) => break RunStatus::Diverged(e.to_string()),
+                Err(e) => break RunStatus::Diverged(e),
             }
         };
         RunRecord {

@@ -35,19 +35,76 @@ pub enum Case {
     },
 }
 
-impl Case {
-    pub fn name(&self) -> &'static str {
+/// Which of the four cases a run is (SPEC §1), without its parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CaseKind {
+    /// A: `static`.
+    Static,
+    /// B: `forced`.
+    Forced,
+    /// C: `pinned`.
+    Pinned,
+    /// D: `free`.
+    Free,
+}
+
+impl CaseKind {
+    /// Every case, in the order A–D.
+    pub const ALL: [CaseKind; 4] = [
+        CaseKind::Static,
+        CaseKind::Forced,
+        CaseKind::Pinned,
+        CaseKind::Free,
+    ];
+
+    /// The case's name as outputs and the command line spell it: `static`, `forced`, `pinned`,
+    /// `free`.
+    pub fn name(self) -> &'static str {
         match self {
-            Case::Static { .. } => "static",
-            Case::Forced { .. } => "forced",
-            Case::Pinned { .. } => "pinned",
-            Case::Free { .. } => "free",
+            CaseKind::Static => "static",
+            CaseKind::Forced => "forced",
+            CaseKind::Pinned => "pinned",
+            CaseKind::Free => "free",
         }
+    }
+
+    /// The case of a name (see [`CaseKind::name`]).
+    pub fn from_name(name: &str) -> Option<CaseKind> {
+        CaseKind::ALL.into_iter().find(|k| k.name() == name)
+    }
+
+    /// Whether the plate's equations of motion are integrated (pinned, free).
+    pub fn is_coupled(self) -> bool {
+        matches!(self, CaseKind::Pinned | CaseKind::Free)
+    }
+}
+
+impl std::fmt::Display for CaseKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl Case {
+    /// Which case this is.
+    pub fn kind(&self) -> CaseKind {
+        match self {
+            Case::Static { .. } => CaseKind::Static,
+            Case::Forced { .. } => CaseKind::Forced,
+            Case::Pinned { .. } => CaseKind::Pinned,
+            Case::Free { .. } => CaseKind::Free,
+        }
+    }
+
+    /// The case's name (`static`, `forced`, `pinned`, `free`).
+    pub fn name(&self) -> &'static str {
+        self.kind().name()
     }
 
     /// Whether the plate's equations of motion are integrated.
     pub fn is_coupled(&self) -> bool {
-        matches!(self, Case::Pinned { .. } | Case::Free { .. })
+        self.kind().is_coupled()
     }
 
     /// The release time (coupled), the end of spin-up (forced) or 0 (static).

@@ -1,33 +1,8 @@
 //! What a run produces, as the solver's own plain-data types: one sample per step, field
 //! snapshots, and how the run ended. Nothing here knows about files or viewers.
 use super::history::History;
+use super::SimError;
 use crate::flow::Frame;
-
-/// One time step's scalars.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct StepSample {
-    pub step: u64,
-    /// Convective time t U / c at the end of the step.
-    pub t: f64,
-    /// The step just taken.
-    pub dt: f64,
-    /// Lift, drag, moment coefficients on the reference speed (SPEC §5).
-    pub cl: f64,
-    pub cd: f64,
-    pub cm: f64,
-    /// Plate centre in the inertial frame (Y up) and pitch angle θ (CCW positive).
-    pub x: f64,
-    pub y: f64,
-    pub theta: f64,
-    /// Inertial velocity of the centre and pitch rate θ̇.
-    pub xdot: f64,
-    pub ydot: f64,
-    pub omega: f64,
-    /// Derived: speed V, flight-path angle γ = atan2(Ẏ, Ẋ), angle of attack α = θ − γ (wrapped to (−π, π]).
-    pub speed: f64,
-    pub gamma: f64,
-    pub alpha: f64,
-}
 
 /// A flow snapshot on the MAC grid.
 ///
@@ -53,9 +28,10 @@ pub struct FieldSnapshot {
 /// How a run ended.
 #[derive(Clone, Debug, PartialEq)]
 pub enum RunStatus {
+    /// The run reached its end time or its number of turns.
     Completed,
-    /// The solution blew up; the message says where and when.
-    Diverged(String),
+    /// The solution blew up; the error says where and when.
+    Diverged(SimError),
     /// Stopped from outside (the observer asked to stop: Ctrl-C).
     Interrupted,
     /// Stopped because an output could not be written (disk full, file removed, …); the message
@@ -63,15 +39,52 @@ pub enum RunStatus {
     OutputFailed(String),
 }
 
+/// How a run ended, without the details: what summaries, CSV trailers and sweep tables record.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StatusKind {
+    /// `completed`.
+    Completed,
+    /// `diverged`.
+    Diverged,
+    /// `interrupted`.
+    Interrupted,
+    /// `output_failed`.
+    OutputFailed,
+}
+
+impl StatusKind {
+    /// The name written in outputs: `completed`, `diverged`, `interrupted` or `output_failed`.
+    pub fn name(self) -> &'static str {
+        match self {
+            StatusKind::Completed => "completed",
+            StatusKind::Diverged => "diverged",
+            StatusKind::Interrupted => "interrupted",
+            StatusKind::OutputFailed => "output_failed",
+        }
+    }
+}
+
+impl std::fmt::Display for StatusKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 impl RunStatus {
+    /// The kind of ending, without its details.
+    pub fn kind(&self) -> StatusKind {
+        match self {
+            RunStatus::Completed => StatusKind::Completed,
+            RunStatus::Diverged(_) => StatusKind::Diverged,
+            RunStatus::Interrupted => StatusKind::Interrupted,
+            RunStatus::OutputFailed(_) => StatusKind::OutputFailed,
+        }
+    }
+
     /// "completed", "diverged", "interrupted" or "output_failed".
     pub fn name(&self) -> &'static str {
-        match self {
-            RunStatus::Completed => "completed",
-            RunStatus::Diverged(_) => "diverged",
-            RunStatus::Interrupted => "interrupted",
-            RunStatus::OutputFailed(_) => "output_failed",
-        }
+        self.kind().name()
     }
 }
 

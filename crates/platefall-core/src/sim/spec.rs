@@ -1,14 +1,18 @@
-//! The typed description of a run (grid, fluid, plate, motion law, time control) that
-//! [`Simulation::new`](super::Simulation::new) builds from, and its validation (SPEC §1–§6).
+//! The typed description of a run (grid, fluid, plate, motion law, time control), and its
+//! validation (SPEC §1–§6) into the [`ValidatedConfig`] that
+//! [`Simulation::new`](super::Simulation::new) takes. The constructors that fill one in for each
+//! case with the command line's defaults are in [`crate::config::RunBuilder`].
 use std::f64::consts::PI;
+use std::ops::Deref;
 
-use serde::{Deserialize, Serialize};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
 
+use super::checks::check_phases;
 use super::motion::Case;
 use crate::body::{AbStart, Coupling, PlateProps};
 use crate::flow::FlowParams;
-use crate::grid::GridSpec;
-use crate::param::{check_range, check_whole, InputError, Param};
+use crate::grid::{Grid, GridSpec};
+use crate::param::{check_range, check_whole, rounded, InputError, Param};
 
 /// The physical scales behind a run's units (SPEC §2): the chord c and the velocity scale U in SI
 /// units. Reports use them to give results in physical units; the solver never reads them.
@@ -20,12 +24,62 @@ pub struct ReferenceScales {
     pub speed_m_s: f64,
 }
 
+/// Where a plate's non-dimensional properties come from.
+///
+/// In the configuration JSON it is the `preset` key: `"card"`, the physical plate's description,
+/// or `null`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PlateSource {
+    /// The seed's card preset (SPEC §8), possibly with some values overridden.
+    Card,
+    /// A plate described physically; its one-line description (sizes, density, fluid).
+    Physical(String),
+    /// m*, I*, g* given directly.
+    NonDimensional,
+}
+
+impl PlateSource {
+    /// How the run's title names the plate.
+    fn describe(&self, props: &PlateProps) -> String {
+        match self {
+            PlateSource::Card => "the card".into(),
+            PlateSource::Physical(text) => text.clone(),
+            PlateSource::NonDimensional => format!(
+                "m* {}, I* {}, g* {}",
+                rounded(props.mass),
+                rounded(props.inertia),
+                rounded(props.gravity)
+            ),
+        }
+    }
+}
+
+impl Serialize for PlateSource {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            PlateSource::Card => s.serialize_some("card"),
+            PlateSource::Physical(text) => s.serialize_some(text),
+            PlateSource::NonDimensional => s.serialize_none(),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for PlateSource {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        Ok(match Option::<String>::deserialize(d)? {
+            None => PlateSource::NonDimensional,
+            Some(text) if text == "card" => PlateSource::Card,
+            Some(text) => PlateSource::Physical(text),
+        })
+    }
+}
+
 /// The plate's inertia and gravity (coupled cases), with where they came from.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BodyConfig {
-    /// "card" when the values come from the seed's card preset (possibly overridden); a short
-    /// description of a physically described plate otherwise.
-    pub preset: Option<String>,
+    /// Where the values come from (the JSON key is `preset`, as the command line's option).
+    #[serde(rename = "preset")]
+    pub source: PlateSource,
     /// The physical chord and velocity scale, when the plate has them.
     #[serde(default)]
     pub scales: Option<ReferenceScales>,
@@ -89,8 +143,16 @@ impl RunConfig {
         }
     }
 
-    /// Validates every value; the first bad one is reported.
-    pub fn validate(&self) -> Result<(), InputError> {
+    /// Validates every value (the first bad one is reported) and builds the grid: the run
+    /// description [`Simulation::new`](super::Simulation::new) takes.
+    pub fn validate(self) -> Result<ValidatedConfig, InputError> {
+        self.check()?;
+        let grid = Grid::new(&self.grid)?;
+        Ok(ValidatedConfig { config: self, grid })
+    }
+
+    /// Checks every value; the first bad one is reported.
+    fn check(&self) -> Result<(), InputError> {
         self.grid.validate()?;
         self.flow.validate()?;
         let t = &self.time;
@@ -101,7 +163,7 @@ impl RunConfig {
             check_range(Param::Turns, n, 0.0, 1e4, true)?;
         }
         self.validate_case()?;
-        super::checks::check_phases(self)?;
+        check_phases(&self.case, t.t_end)?;
         if self.case.is_coupled() {
             let b = self.body.as_ref().ok_or(InputError::MissingPlate)?;
             check_range(Param::Mass, b.props.mass, 0.0, 1e6, true)?;
@@ -147,34 +209,92 @@ impl RunConfig {
         }
     }
 
-    /// A one-line description of the run.
+    /// A one-line description of the run: what defines it (the case and its parameters, the
+    /// plate and fluid of a coupled case), the Reynolds number and the resolution, with numbers
+    /// rounded to four significant digits.
     pub fn title(&self) -> String {
-        let case = match &self.case {
-            Case::Static { alpha, .. } => format!("static plate, α = {alpha:.4} rad"),
+        let r = |x: f64| rounded(x);
+        let case = match self.case {
+            Case::Static { alpha, .. } => format!("static plate at α = {} rad", r(alpha)),
             Case::Forced { omega, spinup } => {
-                format!("forced rotation, θ̇ = {omega}, spin-up {spinup}")
+                format!(
+                    "forced rotation to θ̇ = {} over a spin-up of {}",
+                    r(omega),
+                    r(spinup)
+                )
             }
-            Case::Pinned { alpha0, .. } => {
-                format!("pinned autorotation, released at α₀ = {alpha0}")
+            Case::Pinned { alpha0, speed, .. } if speed == 0.0 => {
+                format!(
+                    "pinned plate in still fluid, released at θ₀ = {} rad",
+                    r(alpha0)
+                )
             }
+            Case::Pinned { alpha0, speed, .. } => format!(
+                "pinned autorotation at speed {}, released at α₀ = {} rad",
+                r(speed),
+                r(alpha0)
+            ),
             Case::Free {
                 v0, gamma0, alpha0, ..
-            } => {
-                format!("free fall, V₀ = {v0}, γ₀ = {gamma0:.4}, α₀ = {alpha0}")
-            }
+            } if v0 == 0.0 => format!("free fall from rest at θ₀ = {} rad", r(gamma0 + alpha0)),
+            Case::Free {
+                v0, gamma0, alpha0, ..
+            } => format!(
+                "free fall launched at V₀ = {}, γ₀ = {} rad, α₀ = {} rad",
+                r(v0),
+                r(gamma0),
+                r(alpha0)
+            ),
         };
-        let preset = self
-            .body
-            .as_ref()
-            .and_then(|b| b.preset.as_deref())
-            .map(|p| match p {
-                "card" => ", card preset".to_string(),
-                other => format!(", {other}"),
-            })
-            .unwrap_or_default();
+        let plate = match &self.body {
+            Some(b) if self.case.is_coupled() => format!(", {}", b.source.describe(&b.props)),
+            _ => String::new(),
+        };
         format!(
-            "{case}{preset}, Re {:.0}, N = {}",
-            self.flow.re, self.grid.resolution
+            "{case}{plate}, Re {}, N = {}",
+            r(self.flow.re),
+            self.grid.resolution
         )
+    }
+}
+
+/// A run description whose every value has been checked, with the grid it defines (built once,
+/// here): what [`Simulation::new`](super::Simulation::new) takes. Made by
+/// [`RunConfig::validate`] (or [`crate::config::RunBuilder::build`]); it dereferences to the
+/// [`RunConfig`].
+#[derive(Clone, Debug)]
+pub struct ValidatedConfig {
+    config: RunConfig,
+    grid: Grid,
+}
+
+impl ValidatedConfig {
+    /// The run description.
+    pub fn config(&self) -> &RunConfig {
+        &self.config
+    }
+
+    /// The body-fixed grid of the run.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// The description and the grid, taken apart.
+    pub fn into_parts(self) -> (RunConfig, Grid) {
+        (self.config, self.grid)
+    }
+}
+
+impl Deref for ValidatedConfig {
+    type Target = RunConfig;
+    fn deref(&self) -> &RunConfig {
+        &self.config
+    }
+}
+
+impl Serialize for ValidatedConfig {
+    /// As its [`RunConfig`].
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.config.serialize(s)
     }
 }

@@ -1,10 +1,13 @@
 //! The Rerun side of a recording (cargo feature `viewer`, on by default): the sinks (file,
 //! `--serve`, `--connect`, `--spawn`), the scene (entities, documented in `record/mod.rs`) and the
-//! default blueprint (sent by the scene when it starts). The logger thread drives a [`Viewer`] and knows nothing of Rerun.
+//! default blueprint (sent by the scene when it starts). The logger thread drives a [`Viewer`]
+//! and knows nothing of Rerun. Also a sweep's phase diagram as a recording
+//! ([`write_phase_recording`]).
 mod blueprint;
 mod curves;
 mod images;
 mod layout;
+mod phase;
 mod polar;
 mod rrd_file;
 mod scene;
@@ -27,6 +30,7 @@ use super::messages::{ConnectReport, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::output::OutputError;
 pub use layout::paths;
+pub use phase::write_phase_recording;
 use platefall_core::sim::{FieldSnapshot, StepSample};
 use rrd_file::RrdFile;
 use scene::Scene;
@@ -158,7 +162,9 @@ impl Viewer {
         }
         self.scene = None;
         let rrd = match self.rrd.take() {
-            Some(file) => commit_file(&self.rec, &file, errors),
+            Some(file) => commit_file(&self.rec, &file)
+                .map_err(|e| errors.push(e.to_string()))
+                .ok(),
             None => {
                 let _ = self.rec.flush_with_timeout(FLUSH_LIMIT);
                 None
@@ -182,13 +188,9 @@ impl Viewer {
 /// Longest the end of a run waits for the recording to reach its sinks.
 const FLUSH_LIMIT: Duration = Duration::from_secs(30);
 
-/// Flushes the stream into the file and commits it; the file's name and size, or None with the
-/// reason in `errors` (then nothing is left at the final name).
-fn commit_file(
-    rec: &RecordingStream,
-    file: &RrdFile,
-    errors: &mut Vec<String>,
-) -> Option<(PathBuf, u64)> {
+/// Flushes the stream into the file and commits it: the file's name and size, or why not (then
+/// nothing is left at the final name).
+fn commit_file(rec: &RecordingStream, file: &RrdFile) -> Result<(PathBuf, u64), OutputError> {
     let before = file.flushes();
     let _ = rec.flush_with_timeout(FLUSH_LIMIT);
     let result = if file.flushes() > before {
@@ -200,7 +202,7 @@ fn commit_file(
             FLUSH_LIMIT.as_secs()
         )))
     };
-    result.map_err(|e| errors.push(e.to_string())).ok()
+    result
 }
 
 /// A note for the report when the --connect viewer missed messages.

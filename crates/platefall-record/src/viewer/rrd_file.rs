@@ -14,9 +14,6 @@ use rerun::sink::{LogSink, SinkFlushError};
 
 use crate::output::{LinkCheck, OutputError, PendingFile};
 
-/// The option naming the file.
-const LABEL: &str = "--save";
-
 /// The encoder and the first error; the encoder is taken at the commit.
 struct State {
     encoder: Option<Encoder<PendingFile>>,
@@ -26,6 +23,8 @@ struct State {
 /// One `.rrd` output, shared by the sink (on Rerun's thread) and the logger (which checks it and
 /// commits it).
 pub(crate) struct RrdFile {
+    /// The option or output naming the file, for messages.
+    label: &'static str,
     path: PathBuf,
     state: Mutex<State>,
     failed: AtomicBool,
@@ -36,17 +35,19 @@ pub(crate) struct RrdFile {
 }
 
 impl RrdFile {
-    /// Creates the temporary file and writes the stream header.
-    pub fn create(path: &Path) -> Result<Arc<RrdFile>, OutputError> {
-        let file = PendingFile::create(LABEL, path)?;
+    /// Creates the temporary file of the output `label` (e.g. "--save") and writes the stream
+    /// header.
+    pub fn create(label: &'static str, path: &Path) -> Result<Arc<RrdFile>, OutputError> {
+        let file = PendingFile::create(label, path)?;
         let link = file.link_check();
         let encoder = Encoder::new_eager(
             CrateVersion::LOCAL,
             EncodingOptions::PROTOBUF_COMPRESSED,
             file,
         )
-        .map_err(|e| OutputError::new(LABEL, path, format!("write failed: {e}")))?;
+        .map_err(|e| OutputError::new(label, path, format!("write failed: {e}")))?;
         Ok(Arc::new(RrdFile {
+            label,
             path: path.to_path_buf(),
             state: Mutex::new(State {
                 encoder: Some(encoder),
@@ -73,7 +74,7 @@ impl RrdFile {
             return None;
         }
         let reason = self.lock().error.clone().unwrap_or_default();
-        Some(OutputError::new(LABEL, &self.path, reason))
+        Some(OutputError::new(self.label, &self.path, reason))
     }
 
     /// Checks that the file being written is still on disk (not removed with its directory).
@@ -92,7 +93,7 @@ impl RrdFile {
 
     /// An error about this file.
     pub fn fail(&self, reason: String) -> OutputError {
-        OutputError::new(LABEL, &self.path, reason)
+        OutputError::new(self.label, &self.path, reason)
     }
 
     /// Abandons the file: the temporary file is removed and later messages are ignored.

@@ -22,9 +22,7 @@ use super::wake::WakeScene;
 use crate::messages::{RunInfo, RunOutcome};
 use crate::options::RecordOptions;
 use platefall_core::sim::{FieldSnapshot, RunStatus, StepSample};
-use platefall_post::{
-    default_wake_window, FieldPainter, ImageGrid, PainterOptions, SnapshotFields,
-};
+use platefall_post::{FieldPainter, ImageGrid, PainterOptions, SnapshotFields};
 
 /// All logging state of one run.
 pub(crate) struct Scene {
@@ -63,12 +61,11 @@ impl Scene {
         info: &RunInfo,
         opts: &RecordOptions,
     ) -> rerun::RecordingStreamResult<Self> {
-        let wake_window =
-            (opts.view.wake_window).unwrap_or_else(|| default_wake_window(&info.case));
+        let wake_window = opts.view.wake_window.unwrap_or(info.view.wake_window);
         let fit = ViewFit {
             closeup_reach: window_reach(&opts.field_window),
             wake: wake_window,
-            plots: opts.view.plot_ranges,
+            plots: info.view.plot_ranges,
         };
         send_default_blueprint(&rec, &fit)?;
         let wake = WakeScene::new(
@@ -89,11 +86,10 @@ impl Scene {
             },
         );
         let image = painter.image();
-        let t_end = if opts.t_end.is_finite() && opts.t_end > 0.0 {
-            opts.t_end
-        } else {
-            60.0
-        };
+        let t_end = info
+            .t_end
+            .filter(|t| t.is_finite() && *t > 0.0)
+            .unwrap_or(60.0);
         // At most ~40 segments per curve, at least 2 time units each.
         let seg_len = (t_end / 40.0).max(2.0);
         let live = opts.serve.is_some() || opts.connect.is_some() || opts.spawn;
@@ -115,7 +111,7 @@ impl Scene {
             last_flush: Instant::now(),
             trajectory: SegmentedCurve::new(paths::TRAJECTORY, seg_len, 0xF2A93BFF, 1.2, inf),
             strobe: SegmentedCurve::new(paths::STROBE, seg_len, 0xC8C8C8FF, 0.8, inf),
-            polars: polar_curves(seg_len, &polar_axes(opts.view.plot_ranges)),
+            polars: polar_curves(seg_len, &polar_axes(info.view.plot_ranges)),
             next_sample_t: f64::NEG_INFINITY,
             next_log_t: f64::NEG_INFINITY,
             log_every: opts.field_every.clamp(0.05, 1.0),

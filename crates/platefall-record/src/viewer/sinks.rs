@@ -193,7 +193,7 @@ pub(crate) fn open_sinks(opts: &RecordOptions) -> anyhow::Result<SinkSet> {
         notes: Vec::new(),
     };
     if let Some(path) = &opts.save {
-        let file = RrdFile::create(path)?;
+        let file = RrdFile::create("--save", path)?;
         set.sinks.push(Box::new(RrdSink(file.clone())));
         set.rrd = Some(file);
     }

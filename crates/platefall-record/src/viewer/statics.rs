@@ -34,7 +34,7 @@ pub(super) fn log_static(
             .with_colors([Color::from_u32(color)]);
         rec.log_static(path, &style)?;
     }
-    let [coefficients, motion] = polar_axes(opts.view.plot_ranges);
+    let [coefficients, motion] = polar_axes(info.view.plot_ranges);
     coefficients.log(rec, paths::POLAR_COEFFICIENTS)?;
     motion.log(rec, paths::POLAR_MOTION)?;
     rec.log_static(

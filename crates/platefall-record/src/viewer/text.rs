@@ -18,9 +18,9 @@ fn span(lo: f64, hi: f64) -> String {
 }
 
 /// The recording's own settings: the wake window and the plots' ranges.
-fn view_markdown(opts: &RecordOptions, wake: &ImageGrid) -> String {
+fn view_markdown(info: &RunInfo, wake: &ImageGrid) -> String {
     let w = wake.window;
-    let plots = match opts.view.plot_ranges {
+    let plots = match info.view.plot_ranges {
         Some(r) => format!(
             "coefficients open on [{:.2}, {:.2}], motion on [{:.2}, {:.2}] (zoom out for the start-up spike)",
             r.coefficients[0], r.coefficients[1], r.motion[0], r.motion[1]
@@ -73,7 +73,7 @@ pub(super) fn config_markdown(
         ny = info.grid.ny(),
         th = info.thickness,
         json = code_block("json", &info.config_json),
-        view = view_markdown(opts, wake),
+        view = view_markdown(info, wake),
     )
 }
 

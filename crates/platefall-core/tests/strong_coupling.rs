@@ -5,18 +5,32 @@
 //! pinned plate spun up by a moment T has θ̈ = T/(I + π/128 ρc⁴). Over the first steps the flow
 //! has no vorticity to speak of, so only the added mass resists; at N = 64 the discrete added
 //! mass is 3.2 % (normal) and 2.6 % (pitch) above potential flow, so 5 % is the tolerance.
-mod common;
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use platefall_core::sim::{RunStatus, Simulation, StepSample};
+use platefall_core::body::Coupling;
+use platefall_core::config::{Fluid, Plate, RunBuilder, Strip};
+use platefall_core::sim::{RunStatus, Silent, Simulation, StepSample, ValidatedConfig};
 
 /// The first five steps of 0.002 at N = 64.
-const FIRST_STEPS: [&str; 6] = ["--resolution", "64", "--dt-max", "0.002", "--t-end", "0.01"];
+fn first_steps<C>(b: RunBuilder<C>) -> RunBuilder<C> {
+    b.resolution(64).dt_max(0.002).t_end(0.01)
+}
 
-/// Runs a case for its first steps ([`FIRST_STEPS`]) and returns the last sample.
-fn last_sample(args: &[&str]) -> StepSample {
-    let args: Vec<&str> = args.iter().chain(&FIRST_STEPS).copied().collect();
-    let mut sim = Simulation::new(common::config(&args)).expect("simulation builds");
+/// A strip of `chord_mm` × `thickness_mm` mm and `density` kg/m³ in water.
+fn strip(chord_mm: f64, thickness_mm: f64, density: f64) -> Plate {
+    Plate::strip(&Strip {
+        chord: chord_mm * 1e-3,
+        thickness: thickness_mm * 1e-3,
+        density,
+        fluid: Fluid::water(),
+        gravity: 9.81,
+    })
+    .unwrap()
+}
+
+/// Runs a case to its end and returns its last sample.
+fn last_sample(config: ValidatedConfig) -> StepSample {
+    let mut sim = Simulation::new(config).expect("simulation builds");
     let mut last = None;
     while !sim.finished() {
         last = Some(sim.step().expect("step"));
@@ -33,25 +47,10 @@ fn close(measured: f64, expected: f64, scale: f64) -> bool {
 /// acceleration over five steps of 0.002 (body axes) and what potential flow predicts.
 fn release(theta0: f64, mass: f64) -> ([f64; 2], [f64; 2]) {
     let displaced = 1.0 / 64.0;
-    let s = last_sample(&[
-        "free",
-        "--preset",
-        "none",
-        "--re",
-        "5000",
-        "--mass",
-        &mass.to_string(),
-        "--inertia",
-        &(mass / 12.0).to_string(),
-        "--gravity",
-        &(1.0 / (mass - displaced)).to_string(),
-        "--displaced-mass",
-        &displaced.to_string(),
-        "--v0",
-        "0",
-        "--theta0",
-        &theta0.to_string(),
-    ]);
+    let plate =
+        Plate::nondimensional(mass, mass / 12.0, 1.0 / (mass - displaced)).displaced(displaced);
+    let run = RunBuilder::free(plate).re(5000.0).v0(0.0).theta0(theta0);
+    let s = last_sample(first_steps(run).build().unwrap());
     assert!(
         s.omega.abs() / s.t < 0.01,
         "θ̈ = {} for a symmetric release",
@@ -90,25 +89,9 @@ fn release_from_rest_accelerates_with_the_added_mass_of_potential_flow() {
 fn pinned_plate_spun_up_by_a_moment_has_the_added_inertia_of_potential_flow() {
     for inertia in [0.002, 0.2] {
         let torque = 0.05;
-        let s = last_sample(&[
-            "pinned",
-            "--preset",
-            "none",
-            "--re",
-            "5000",
-            "--mass",
-            "1",
-            "--gravity",
-            "0",
-            "--inertia",
-            &inertia.to_string(),
-            "--torque",
-            &torque.to_string(),
-            "--v0",
-            "0",
-            "--alpha0",
-            "0",
-        ]);
+        let plate = Plate::nondimensional(1.0, inertia, 0.0).torque(torque);
+        let run = RunBuilder::pinned(plate).re(5000.0).speed(0.0).alpha0(0.0);
+        let s = last_sample(first_steps(run).build().unwrap());
         let measured = s.omega / s.t;
         let expected = torque / (inertia + PI / 128.0);
         eprintln!("I* {inertia}: θ̈ {measured:.4}, potential flow {expected:.4}");
@@ -124,17 +107,8 @@ fn pinned_plate_spun_up_by_a_moment_has_the_added_inertia_of_potential_flow() {
 fn a_plate_lighter_than_the_fluid_rises() {
     // A 64 × 1 mm plate of 500 kg/m³ in water, horizontal: weight −1, m* = 0.00783; it rises with
     // 1/(m* + π/4) (the grid draws it one cell thick at N = 64, t/c = 1/64).
-    let s = last_sample(&[
-        "free",
-        "--chord-mm",
-        "64",
-        "--thickness-mm",
-        "1",
-        "--plate-density",
-        "500",
-        "--theta0",
-        "0",
-    ]);
+    let run = RunBuilder::free(strip(64.0, 1.0, 500.0)).theta0(0.0);
+    let s = last_sample(first_steps(run).build().unwrap());
     let mass = 500.0 / 998.2 / 64.0;
     let expected = 1.0 / (mass + PI / 4.0);
     let measured = s.ydot / s.t;
@@ -147,21 +121,12 @@ fn a_plate_lighter_than_the_fluid_rises() {
 
 #[test]
 fn a_neutrally_buoyant_plate_released_from_rest_stays_at_rest() {
-    let cfg = common::config(&[
-        "free",
-        "--chord-mm",
-        "10",
-        "--thickness-mm",
-        "0.5",
-        "--plate-density",
-        "998.2",
-        "--theta0",
-        "0.4",
-        "--resolution",
-        "16",
-        "--t-end",
-        "10",
-    ]);
+    let cfg = RunBuilder::free(strip(10.0, 0.5, 998.2))
+        .theta0(0.4)
+        .resolution(16)
+        .t_end(10.0)
+        .build()
+        .unwrap();
     let body = cfg.body.as_ref().unwrap();
     assert_eq!(body.props.weight(), 0.0);
     let mut sim = Simulation::new(cfg).unwrap();
@@ -170,7 +135,7 @@ fn a_neutrally_buoyant_plate_released_from_rest_stays_at_rest() {
         let s = sim.step().unwrap();
         moved = moved.max(s.x.hypot(s.y)).max((s.theta - 0.4).abs());
     }
-    assert!(sim.flow.t >= 10.0 - 1e-9);
+    assert!(sim.flow().t() >= 10.0 - 1e-9);
     assert!(
         moved < 1e-6,
         "moved {moved} chords (or rad) in 10 time units"
@@ -183,27 +148,14 @@ fn a_very_light_plate_at_low_reynolds_number_has_no_step_to_step_oscillation() {
     // plate, times the viscous time step 0.0029 is 1.26 m*. Taken explicitly it made the velocity
     // alternate from step to step with growing amplitude; with Δt·S in the body's left-hand side
     // every velocity increment of the first 30 steps keeps the sign of the one before.
-    let cfg = common::config(&[
-        "free",
-        "--preset",
-        "none",
-        "--re",
-        "30",
-        "--mass",
-        "0.01",
-        "--inertia",
-        "0.001",
-        "--gravity",
-        "100",
-        "--v0",
-        "0",
-        "--theta0",
-        "1.2",
-        "--resolution",
-        "32",
-        "--t-end",
-        "1",
-    ]);
+    let cfg = RunBuilder::free(Plate::nondimensional(0.01, 0.001, 100.0))
+        .re(30.0)
+        .v0(0.0)
+        .theta0(1.2)
+        .resolution(32)
+        .t_end(1.0)
+        .build()
+        .unwrap();
     let mut sim = Simulation::new(cfg).unwrap();
     let samples: Vec<_> = (0..30).map(|_| sim.step().unwrap()).collect();
     let xdot: Vec<f64> = samples.iter().map(|s| s.xdot).collect();
@@ -225,34 +177,21 @@ fn explicit_coupling_of_a_light_plate_runs_away_and_strong_coupling_does_not() {
     // m* = 0.1, I* = 0.0083 (a strip 10 × 0.3125 mm of 3194 kg/m³ in water): the added mass is
     // 7.9 m*, so the explicit step amplifies errors about eightfold and the run diverges within a
     // few dozen steps; the same plate under strong coupling falls for 2 time units.
-    let strip = [
-        "free",
-        "--chord-mm",
-        "10",
-        "--thickness-mm",
-        "0.3125",
-        "--plate-density",
-        "3194",
-        "--theta0",
-        "0.3",
-        "--resolution",
-        "16",
-        "--t-end",
-        "2",
-    ];
-    let explicit: Vec<&str> = strip
-        .iter()
-        .chain(&["--coupling", "explicit"])
-        .copied()
-        .collect();
-    let (_, rec, _) = common::run(&explicit);
+    let run = || {
+        RunBuilder::free(strip(10.0, 0.3125, 3194.0))
+            .theta0(0.3)
+            .resolution(16)
+            .t_end(2.0)
+    };
+    let record = |config: ValidatedConfig| Simulation::new(config).unwrap().run(&mut Silent);
+    let rec = record(run().coupling(Coupling::Explicit).build().unwrap());
     assert!(
         matches!(rec.status, RunStatus::Diverged(_)),
         "{:?}",
         rec.status
     );
     assert!(rec.samples.last().unwrap().t < 0.5);
-    let (_, rec, _) = common::run(&strip);
+    let rec = record(run().build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
     let last = rec.samples.last().unwrap();
     assert!(last.y < -0.5 && last.speed < 3.0, "{last:?}");

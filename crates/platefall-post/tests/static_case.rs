@@ -1,20 +1,16 @@
 //! Case A, the static plate (SPEC §1, §5, §8) at the seed's resolution N = 16, Re = 5000.
 mod common;
+use platefall_core::config::RunBuilder;
 use platefall_core::sim::RunStatus;
 
 #[test]
 fn normal_plate_sheds_an_asymmetric_wake() {
     // α = π/2: the seed's solver kept a symmetric wake (C_D 1.494, no street). Here the wake must
     // break symmetry and shed: C_L oscillates with amplitude > 0.1 over the developed part.
-    let (_, rec, s) = common::run(&[
-        "static",
-        "--alpha",
-        "1.5707963267948966",
-        "--resolution",
-        "16",
-        "--t-end",
-        "60",
-    ]);
+    let config = RunBuilder::static_plate(std::f64::consts::FRAC_PI_2)
+        .resolution(16)
+        .t_end(60.0);
+    let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
     let amplitude = 0.5 * (s.max_cl.unwrap() - s.min_cl.unwrap());
     eprintln!(
@@ -41,15 +37,8 @@ fn normal_plate_sheds_an_asymmetric_wake() {
 fn inclined_plate_sheds_at_the_expected_strouhal_number() {
     // α = 0.4: periodic shedding with a Strouhal number on the projected width c sin α in
     // [0.12, 0.20] (seed 0.13; bluff-body wakes 0.14–0.18).
-    let (_, rec, s) = common::run(&[
-        "static",
-        "--alpha",
-        "0.4",
-        "--resolution",
-        "16",
-        "--t-end",
-        "40",
-    ]);
+    let config = RunBuilder::static_plate(0.4).resolution(16).t_end(40.0);
+    let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
     let st = s.strouhal_width.expect("periodic shedding");
     assert!(
@@ -64,22 +53,14 @@ fn inclined_plate_sheds_at_the_expected_strouhal_number() {
 fn mirrored_angle_mirrors_lift_and_moment_and_keeps_drag() {
     // Reflection y → −y maps α to −α: C_L and C_M change sign, C_D is unchanged. Short attached
     // start-up (t ≤ 3) without the kick; only round-off in the factorisation differs, so 1e-6.
-    let run = |alpha: &str| {
-        common::run(&[
-            "static",
-            "--alpha",
-            alpha,
-            "--kick",
-            "0",
-            "--resolution",
-            "16",
-            "--t-end",
-            "3",
-        ])
-        .1
-        .samples
+    let run = |alpha: f64| {
+        let config = RunBuilder::static_plate(alpha)
+            .kick(0.0)
+            .resolution(16)
+            .t_end(3.0);
+        common::run(config.build().unwrap()).1.samples
     };
-    let (a, b) = (run("0.3"), run("-0.3"));
+    let (a, b) = (run(0.3), run(-0.3));
     assert_eq!(a.len(), b.len());
     for (p, q) in a.iter().zip(&b).skip(1) {
         assert!(
@@ -109,17 +90,11 @@ fn mirrored_angle_mirrors_lift_and_moment_and_keeps_drag() {
 #[test]
 fn zero_incidence_plate_has_no_lift_and_only_friction_and_edge_drag() {
     // α = 0, symmetric about the chord line: C_L ≈ 0 to round-off, C_D > 0.
-    let (_, _, s) = common::run(&[
-        "static",
-        "--alpha",
-        "0",
-        "--kick",
-        "0",
-        "--resolution",
-        "16",
-        "--t-end",
-        "4",
-    ]);
+    let config = RunBuilder::static_plate(0.0)
+        .kick(0.0)
+        .resolution(16)
+        .t_end(4.0);
+    let (_, _, s) = common::run(config.build().unwrap());
     assert!(s.mean_cl.unwrap().abs() < 1e-8, "C_L = {:?}", s.mean_cl);
     assert!(s.mean_cd.unwrap() > 0.0);
 }

@@ -1,47 +1,14 @@
-//! Small file-system helpers: atomic writes (a file at its final name is complete), times and the
-//! host name for logs.
-use std::io::Write;
-use std::path::{Path, PathBuf};
+//! Times and the host name, for the cases' logs and `status.json`.
 use std::time::{SystemTime, UNIX_EPOCH};
 
-/// A temporary name beside `path`, unique to this process.
-pub fn temp_beside(path: &Path) -> PathBuf {
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    path.with_file_name(format!(".{name}.tmp-{}", std::process::id()))
-}
-
-/// Writes `bytes` under a temporary name in the same directory, then renames it to `path`.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let tmp = temp_beside(path);
-    let result = (|| {
-        let mut f = std::fs::File::create(&tmp)?;
-        f.write_all(bytes)?;
-        f.sync_all()?;
-        std::fs::rename(&tmp, path)
-    })();
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
-}
-
-/// [`write_atomic`] with a one-line error naming the file.
-pub fn write_output(path: &Path, bytes: &[u8]) -> Result<(), super::Failure> {
-    write_atomic(path, bytes)
-        .map_err(|e| super::Failure::output(format!("cannot write {}: {e}", path.display())))
-}
-
 /// Seconds since the Unix epoch.
-pub fn unix_seconds(t: SystemTime) -> f64 {
+pub(crate) fn unix_seconds(t: SystemTime) -> f64 {
     t.duration_since(UNIX_EPOCH)
         .map_or(0.0, |d| d.as_secs_f64())
 }
 
 /// A time as `YYYY-MM-DDTHH:MM:SSZ` (UTC).
-pub fn utc(t: SystemTime) -> String {
+pub(crate) fn utc(t: SystemTime) -> String {
     let secs = t.duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs()) as i64;
     let (days, rem) = (secs.div_euclid(86_400), secs.rem_euclid(86_400));
     // Civil date from days since 1970-01-01 (proleptic Gregorian calendar).
@@ -63,7 +30,7 @@ pub fn utc(t: SystemTime) -> String {
 }
 
 /// This machine's host name (for the logs of cluster runs).
-pub fn hostname() -> String {
+pub(crate) fn hostname() -> String {
     std::fs::read_to_string("/proc/sys/kernel/hostname")
         .map(|s| s.trim().to_string())
         .ok()

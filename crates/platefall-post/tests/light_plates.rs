@@ -1,22 +1,26 @@
 //! Light plates under strong coupling (SPEC §6): stable where explicit coupling diverges, at the
-//! time step of a heavy plate, and heavy plates unchanged. CI-sized: N = 16 (the README gives the
-//! same at N = 32 and 64: `cargo test --release --test light_plates -- --ignored`).
+//! time step of a heavy plate, and heavy plates unchanged. CI-sized: N = 16 (docs/verification.md
+//! gives the same at N = 32: `cargo test --release -p platefall-post --test light_plates --
+//! --ignored`).
 mod common;
 use std::sync::OnceLock;
 use std::thread;
 
+use platefall_core::body::Coupling;
+use platefall_core::config::{Fluid, Plate, RunBuilder, Strip};
 use platefall_core::sim::{RunRecord, RunStatus, StepSample};
 use platefall_post::analysis::{mean_over, TimeWindow};
+use platefall_post::regime::Regime;
 use platefall_post::summary::Summary;
 
 /// Strips 10 mm × 0.3125 mm (t/c = 1/32) in water whose densities give m* = 0.01 … 0.3
 /// (I* = m*(1 + 1/32²)/12: 0.00083 … 0.025); the two lightest rise.
-const DENSITIES: [(f64, &str); 5] = [
-    (0.01, "319.4"),
-    (0.02, "638.8"),
-    (0.05, "1597"),
-    (0.1, "3194"),
-    (0.3, "9582"),
+const DENSITIES: [(f64, f64); 5] = [
+    (0.01, 319.4),
+    (0.02, 638.8),
+    (0.05, 1597.0),
+    (0.1, 3194.0),
+    (0.3, 9582.0),
 ];
 
 /// Mean time step after the release.
@@ -30,56 +34,48 @@ fn mean_dt_after_release(rec: &RunRecord) -> f64 {
     after.iter().sum::<f64>() / after.len() as f64
 }
 
-fn strip_from_rest(density: &str, n: &str) -> (RunRecord, Summary) {
-    let args = [
-        "free",
-        "--chord-mm",
-        "10",
-        "--thickness-mm",
-        "0.3125",
-        "--plate-density",
+/// A 10 × 0.3125 mm strip of `density` (kg/m³) in water released from rest at θ₀ = 0.3.
+fn strip_from_rest(density: f64, n: usize) -> (RunRecord, Summary) {
+    let strip = Strip {
+        chord: 10.0 * 1e-3,
+        thickness: 0.3125 * 1e-3,
         density,
-        "--theta0",
-        "0.3",
-        "--resolution",
-        n,
-        "--t-end",
-        "40",
-    ];
-    let (_, rec, sum) = common::run(&args);
+        fluid: Fluid::water(),
+        gravity: 9.81,
+    };
+    let config = RunBuilder::free(Plate::strip(&strip).unwrap())
+        .theta0(0.3)
+        .resolution(n)
+        .t_end(40.0);
+    let (_, rec, sum) = common::run(config.build().unwrap());
     (rec, sum)
 }
 
-fn card(n: &str, coupling: &str, turns: &str) -> (RunRecord, Summary) {
-    let args = [
-        "free",
-        "--resolution",
-        n,
-        "--turns",
-        turns,
-        "--coupling",
-        coupling,
-    ];
-    let (_, rec, sum) = common::run(&args);
+fn card(n: usize, coupling: Coupling, turns: f64) -> (RunRecord, Summary) {
+    let config = RunBuilder::free(Plate::card())
+        .resolution(n)
+        .turns(turns)
+        .coupling(coupling);
+    let (_, rec, sum) = common::run(config.build().unwrap());
     (rec, sum)
 }
 
 /// The card under strong coupling at N = 16 for 3 turns, shared by the two tests that need it.
 fn card16_strong() -> &'static (RunRecord, Summary) {
     static RUN: OnceLock<(RunRecord, Summary)> = OnceLock::new();
-    RUN.get_or_init(|| card("16", "strong", "3"))
+    RUN.get_or_init(|| card(16, Coupling::Strong, 3.0))
 }
 
 /// `f` of the card's strong run for 3 turns at a resolution (shared at N = 16).
-fn with_card_strong<R>(n: &str, f: impl FnOnce(&RunRecord) -> R) -> R {
+fn with_card_strong<R>(n: usize, f: impl FnOnce(&RunRecord) -> R) -> R {
     match n {
-        "16" => f(&card16_strong().0),
-        _ => f(&card(n, "strong", "3").0),
+        16 => f(&card16_strong().0),
+        _ => f(&card(n, Coupling::Strong, 3.0).0),
     }
 }
 
 /// Every light plate completes 40 time units from rest with a mean Δt no smaller than the card's.
-fn light_plates_are_stable(n: &'static str) -> Vec<(f64, Summary)> {
+fn light_plates_are_stable(n: usize) -> Vec<(f64, Summary)> {
     let (runs, card_dt) = thread::scope(|scope| {
         let card = scope.spawn(move || with_card_strong(n, mean_dt_after_release));
         let runs: Vec<_> = DENSITIES
@@ -95,7 +91,7 @@ fn light_plates_are_stable(n: &'static str) -> Vec<(f64, Summary)> {
         eprintln!(
             "N = {n}, m* = {m}: {} to t = {:.2}, mean Δt {dt:.3e} (card {card_dt:.3e}), regime {:?}",
             sum.status,
-            sum.t_end,
+            sum.t_reached,
             sum.fall.regime
         );
         assert_eq!(
@@ -103,7 +99,7 @@ fn light_plates_are_stable(n: &'static str) -> Vec<(f64, Summary)> {
             RunStatus::Completed,
             "m* = {m} did not complete"
         );
-        assert!((sum.t_end - 40.0).abs() < 1e-9);
+        assert!((sum.t_reached - 40.0).abs() < 1e-9);
         assert!(
             dt >= card_dt,
             "m* = {m}: mean Δt {dt} below the card's {card_dt}"
@@ -115,11 +111,11 @@ fn light_plates_are_stable(n: &'static str) -> Vec<(f64, Summary)> {
 
 #[test]
 fn light_plates_fall_from_rest_stably_at_the_time_step_of_a_heavy_plate() {
-    let sums = light_plates_are_stable("16");
+    let sums = light_plates_are_stable(16);
     // The regime rule on real runs: the lightest plates rise fluttering (a zigzag with a regular
     // period of about 2 time units and an angle amplitude of about 0.35–0.45 rad at N = 16).
     for (m, s) in sums.iter().filter(|(m, _)| *m <= 0.02) {
-        assert_eq!(s.fall.regime.as_deref(), Some("fluttering"), "m* = {m}");
+        assert_eq!(s.fall.regime, Some(Regime::Fluttering), "m* = {m}");
         let p = s.fall.period.unwrap();
         assert!((1.0..3.0).contains(&p), "m* = {m}: period {p}");
         assert!(
@@ -130,9 +126,9 @@ fn light_plates_fall_from_rest_stably_at_the_time_step_of_a_heavy_plate() {
 }
 
 #[test]
-#[ignore = "the N = 32 figures of the README (about 20 CPU minutes)"]
+#[ignore = "the N = 32 figures of docs/verification.md (about 20 CPU minutes)"]
 fn light_plates_at_n32() {
-    light_plates_are_stable("32");
+    light_plates_are_stable(32);
 }
 
 /// The card at N = 16, 3 turns: mean V and θ̇ of the strong run over the explicit run's developed
@@ -140,7 +136,7 @@ fn light_plates_at_n32() {
 #[test]
 fn the_card_falls_as_with_explicit_coupling() {
     let (rx, sx) = thread::scope(|scope| {
-        let x = scope.spawn(|| card("16", "explicit", "3"));
+        let x = scope.spawn(|| card(16, Coupling::Explicit, 3.0));
         card16_strong();
         x.join().unwrap()
     });

@@ -1,22 +1,24 @@
-//! `phase.rrd`: the phase diagram as a Rerun recording. Each case is its own entity
+//! A sweep's `phase.rrd`: the phase diagram as a Rerun recording. Each case is its own entity
 //! (`/phase/regime/cases/<id>`, `/phase/value/cases/<id>`), a point coloured by its regime (or by
 //! the chosen value) and labelled with its id and the path of its recording; selecting it in the
-//! viewer shows its status, regime, value, recording path and the command that opens it.
-//! All Rerun-specific code of the sweep is in this file.
-use std::path::Path;
+//! viewer shows its status, regime, value, recording path and the command that opens it. The
+//! file is written like every other output ([`RrdFile`]: temporary name, commit).
+use std::path::{Path, PathBuf};
 
 use rerun::components::{Radius, Text};
+use rerun::sink::LogSink;
 use rerun::{
     AnyValues, Color, EntityPath, EntityPathPart, LineStrips2D, Points2D, RecordingStream,
     TextDocument,
 };
 
-use super::diagram::{
-    colour_map, regime_colour, short_number, span, DiagramData, Point, Rgb, FAILED, REGIMES,
+use super::commit_file;
+use super::rrd_file::{RrdFile, RrdSink};
+use crate::output::OutputError;
+use platefall_core::param::rounded as short_number;
+use platefall_post::phase::{
+    colour_map, regime_colour, span, CaseState, DiagramData, Point, Rgb, FAILED, REGIME_COLOURS,
 };
-use super::fsutil::temp_beside;
-use super::layout::Layout;
-use super::Failure;
 
 /// Left edge of the value panel in the recording's plane (the regime panel is the unit square).
 const VALUE_OFFSET: f32 = 1.35;
@@ -53,23 +55,26 @@ impl Frame {
     }
 }
 
-/// Writes `phase.rrd` under a temporary name, finalises it and renames it.
-pub fn write_recording(layout: &Layout, data: &DiagramData) -> Result<(), Failure> {
-    let target = layout.output("phase.rrd");
-    let tmp = temp_beside(&target);
-    let fail = |e: String| {
-        let _ = std::fs::remove_file(&tmp);
-        Failure::output(format!("cannot write {}: {e}", target.display()))
-    };
+/// Writes the phase diagram to the recording `path` (under a temporary name until it is
+/// complete); its final name and size (always `Some`: this build has the viewer).
+pub fn write_phase_recording(
+    path: &Path,
+    data: &DiagramData,
+) -> Result<Option<(PathBuf, u64)>, OutputError> {
+    let file = RrdFile::create("phase diagram", path)?;
+    let sinks: Vec<Box<dyn LogSink>> = vec![Box::new(RrdSink(file.clone()))];
     let rec = rerun::RecordingStreamBuilder::new("platefall_sweep")
         .recording_name(data.title.clone())
-        .save(&tmp)
-        .map_err(|e| fail(e.to_string()))?;
-    log_all(&rec, data).map_err(|e| fail(e.to_string()))?;
-    rec.flush_blocking().map_err(|e| fail(e.to_string()))?;
-    rec.finalize_deferred_sinks();
+        .enabled(true)
+        .set_sinks(sinks)
+        .map_err(|e| file.fail(e.to_string()))?;
+    if let Err(e) = log_all(&rec, data) {
+        file.discard();
+        return Err(file.fail(e.to_string()));
+    }
+    let written = commit_file(&rec, &file);
     drop(rec);
-    std::fs::rename(&tmp, &target).map_err(|e| fail(e.to_string()))
+    written.map(Some)
 }
 
 fn log_all(rec: &RecordingStream, data: &DiagramData) -> rerun::RecordingStreamResult<()> {
@@ -102,15 +107,15 @@ fn log_case(
         .recording
         .as_deref()
         .map_or("no recording".to_string(), |f| f.display().to_string());
-    let regime_colour_of = match p.status {
-        "completed" => regime_colour(&p.regime),
-        "diverged" | "failed" => FAILED,
+    let regime_colour_of = match p.state {
+        CaseState::Completed => regime_colour(p.regime),
+        CaseState::Diverged | CaseState::Failed => FAILED,
         _ => (200, 200, 200),
     };
     let details = AnyValues::default()
         .with_component::<Text>("case", [p.id.as_str()])
-        .with_component::<Text>("status", [p.status])
-        .with_component::<Text>("regime", [p.regime.as_str()])
+        .with_component::<Text>("status", [p.state.name()])
+        .with_component::<Text>("regime", [p.regime_name()])
         .with_component::<Text>(
             "value",
             [format!(
@@ -202,12 +207,12 @@ fn panel_axes(
 /// The legend and the table of cases, as markdown.
 fn legend_markdown(data: &DiagramData) -> String {
     let mut md = format!("# {}\n\nLeft: motion regime, by colour: ", data.title);
-    let names: Vec<String> = REGIMES
+    let names: Vec<String> = REGIME_COLOURS
         .iter()
-        .map(|(n, c)| format!("{n} (#{:02x}{:02x}{:02x})", c.0, c.1, c.2))
+        .map(|(r, c)| format!("{} (#{:02x}{:02x}{:02x})", r.name(), c.0, c.1, c.2))
         .collect();
     md.push_str(&names.join(", "));
-    md.push_str("; dark grey: diverged or failed; light grey: not run.\n\n");
+    md.push_str("; grey: no regime (n/a); dark grey: diverged or failed; light grey: not run.\n\n");
     if let Some((lo, hi)) = data.value_range() {
         md.push_str(&format!(
             "Right: `{}` from {} (dark blue) to {} (yellow).\n\n",
@@ -224,8 +229,8 @@ fn legend_markdown(data: &DiagramData) -> String {
         md.push_str(&format!(
             "| {} | {} | {} | {} | {} |\n",
             p.id,
-            p.status,
-            p.regime,
+            p.state,
+            p.regime_name(),
             p.value.map_or("".into(), short_number),
             p.recording
                 .as_deref()

@@ -1,5 +1,6 @@
 //! Cases B–D (SPEC §1, §6, §8) at the seed's resolution N = 16: short CI runs.
 mod common;
+use platefall_core::config::{Plate, RunBuilder};
 use platefall_core::sim::RunRecord;
 use platefall_core::sim::RunStatus;
 use platefall_post::analysis::{dominant_frequency, TimeWindow};
@@ -15,17 +16,11 @@ fn turned_since_release(rec: &RunRecord) -> f64 {
 fn forced_rotation_lift_is_periodic_at_the_forced_rate() {
     // θ̇ = 2 after a 1-unit spin-up: the plate is symmetric under a half-turn, so C_L repeats every
     // π/θ̇; its dominant frequency must be θ̇/π within 3 % (the spectral estimate over ≥ 4 periods).
-    let (_, rec, s) = common::run(&[
-        "forced",
-        "--rate",
-        "2",
-        "--spinup",
-        "1",
-        "--resolution",
-        "16",
-        "--t-end",
-        "12",
-    ]);
+    let config = RunBuilder::forced(2.0)
+        .spinup(1.0)
+        .resolution(16)
+        .t_end(12.0);
+    let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
     let w = TimeWindow { t0: 3.0, t1: 12.0 };
     let f = dominant_frequency(&rec.samples, w, 0.02, |x| x.cl).expect("periodic lift");
@@ -46,15 +41,11 @@ fn forced_rotation_lift_is_periodic_at_the_forced_rate() {
 fn pinned_card_reaches_sustained_autorotation() {
     // Released at α₀ = 0.1 after 5 units of development; θ must pass 4π and the mean rate over the
     // whole turns after the first must lie in [1.0, 2.5] (seed 1.58).
-    let (_, rec, s) = common::run(&[
-        "pinned",
-        "--resolution",
-        "16",
-        "--t-end",
-        "40",
-        "--turns",
-        "2.2",
-    ]);
+    let config = RunBuilder::pinned(Plate::card())
+        .resolution(16)
+        .t_end(40.0)
+        .turns(2.2);
+    let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
     let turned = turned_since_release(&rec);
     assert!(turned.abs() >= 4.0 * PI, "θ turned only {turned:.2} rad");
@@ -66,15 +57,11 @@ fn pinned_card_reaches_sustained_autorotation() {
 
 #[test]
 fn free_card_autorotates_while_falling() {
-    let (_, rec, s) = common::run(&[
-        "free",
-        "--resolution",
-        "16",
-        "--t-end",
-        "40",
-        "--turns",
-        "2.2",
-    ]);
+    let config = RunBuilder::free(Plate::card())
+        .resolution(16)
+        .t_end(40.0)
+        .turns(2.2);
+    let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
     let turned = turned_since_release(&rec);
     assert!(turned.abs() >= 4.0 * PI, "θ turned only {turned:.2} rad");

@@ -2,39 +2,26 @@
 //! impulsive start the pressure impulse is pure added mass. A flat plate moving normal to itself
 //! has added mass π/4 ρc² per unit span; one spun up impulsively about its centre has added pitch
 //! inertia π/128 ρc⁴. So F·Δt = −(π/4)ΔV and M·Δt = −(π/128)Δθ̇ on the first step.
-mod common;
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 
-fn first_step(args: &[&str]) -> platefall_core::sim::StepSample {
-    let cfg = common::config(args);
-    let mut sim = platefall_core::sim::Simulation::new(cfg).unwrap();
+use platefall_core::config::RunBuilder;
+use platefall_core::sim::{Simulation, StepSample, ValidatedConfig};
+
+fn first_step(config: ValidatedConfig) -> StepSample {
+    let mut sim = Simulation::new(config).unwrap();
     sim.step().unwrap()
 }
 
 fn added_mass(n: usize) -> f64 {
-    let s = first_step(&[
-        "static",
-        "--alpha",
-        "1.5707963267948966",
-        "--kick",
-        "0",
-        "--resolution",
-        &n.to_string(),
-    ]);
+    let config = RunBuilder::static_plate(FRAC_PI_2).kick(0.0).resolution(n);
+    let s = first_step(config.build().unwrap());
     // ΔV = 1 normal to the plate; drag = −F·ê_V, C_D = 2 D.
     0.5 * s.cd * s.dt
 }
 
 fn added_inertia(n: usize) -> f64 {
-    let s = first_step(&[
-        "forced",
-        "--rate",
-        "1",
-        "--spinup",
-        "0",
-        "--resolution",
-        &n.to_string(),
-    ]);
+    let config = RunBuilder::forced(1.0).spinup(0.0).resolution(n);
+    let s = first_step(config.build().unwrap());
     // Δθ̇ = 1; the moment opposes the spin-up: C_M = 2 M < 0. (The translation at U adds no
     // moment impulse: the plate starts at α = 0, edge-on.)
     -0.5 * s.cm * s.dt

@@ -1,38 +1,40 @@
-//! The `platefall sweep` command line.
+//! The `platefall sweep` command line, turned into the sweep's own [`SweepRequest`].
 use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
 
-/// Shown after `platefall sweep --help`.
+use super::sweep_cases::CommandLineCases;
+use crate::exit::Exit;
+use crate::sweep::{self, SlurmOverrides, SweepRequest};
+
+/// Shown after `platefall sweep --help` (before the exit codes).
 const AFTER_HELP: &str = "\
 A plan names a case, its fixed options ([fixed]), the swept ones ([grid]: every combination; [zip]: \
 advanced together; lists [a, b] or ranges { from = A, to = B, count = N, scale = \"log\" }), the \
 output directory, [outputs] recording, the [diagram] axes and value, and [slurm] resources. See \
-examples/sweep-static.toml and the README's \"Parameter sweeps\".
+examples/sweep-static.toml and docs/user-guide.md, \"Parameter sweeps\".
 
 A case is done when DIR/cases/<id>/summary.json says completed or diverged; rerunning the plan runs \
-only the others. Ctrl-C stops launching, lets the running cases finalise and merges the results.
+only the others. Ctrl-C stops launching, lets the running cases finalise and merges the results.";
 
-Exit codes: 0 every case completed; 2 bad plan or options (nothing is run or written); 3 the sweep \
-ended but some cases did not complete (listed, with why); 4 an output could not be written; 130 \
-interrupted.";
+/// The long help's closing text: the plan format and the exit codes.
+fn after_help() -> String {
+    format!("{AFTER_HELP}\n\n{}", Exit::help(true))
+}
 
 /// Run a parameter sweep of one case from a plan file (TOML): locally with --jobs cases at once,
 /// or as a Slurm job array with --slurm; `collect` merges a directory's finished cases.
-///
-/// Exit codes: 0 every case completed; 2 bad plan or options (nothing is run or written); 3 the
-/// sweep ended but some cases did not complete (listed, with why); 4 an output could not be
-/// written; 130 interrupted (the running cases are finalised and the results merged first).
 #[derive(Args, Debug)]
 #[command(
     args_conflicts_with_subcommands = true,
     subcommand_negates_reqs = true,
-    after_long_help = AFTER_HELP
+    after_help = Exit::help(true),
+    after_long_help = after_help()
 )]
 pub struct SweepArgs {
     #[command(subcommand)]
     pub action: Option<SweepAction>,
-    /// The plan file (see the README, "Parameter sweeps").
+    /// The plan file (see docs/user-guide.md, "Parameter sweeps").
     #[arg(value_name = "PLAN.toml", required = true)]
     pub plan: Option<PathBuf>,
     /// Cases run at once [default: the number of cores].
@@ -76,6 +78,7 @@ pub struct SlurmFlags {
     pub max_parallel: Option<u32>,
 }
 
+/// The sweep's own subcommands.
 #[derive(Subcommand, Debug)]
 pub enum SweepAction {
     /// Merge whatever has finished in a sweep directory into results.csv, results.json and the
@@ -107,4 +110,53 @@ pub enum ProgressMode {
     Lines,
     /// Nothing.
     Off,
+}
+
+impl SweepArgs {
+    /// The sweep's request.
+    fn request(&self) -> Result<SweepRequest, String> {
+        Ok(match &self.action {
+            Some(SweepAction::Collect { dir }) => SweepRequest::Collect { dir: dir.clone() },
+            Some(SweepAction::RunCase { dir, index }) => SweepRequest::RunCase {
+                dir: dir.clone(),
+                index: *index,
+            },
+            None => SweepRequest::Run {
+                plan: self
+                    .plan
+                    .clone()
+                    .ok_or("give a plan file: platefall sweep PLAN.toml")?,
+                jobs: self.jobs,
+                dry_run: self.dry_run,
+                output: self.output.clone(),
+                progress: match self.progress {
+                    ProgressMode::Auto => sweep::ProgressMode::Auto,
+                    ProgressMode::Bar => sweep::ProgressMode::Bar,
+                    ProgressMode::Lines => sweep::ProgressMode::Lines,
+                    ProgressMode::Off => sweep::ProgressMode::Off,
+                },
+                slurm: self.slurm.then(|| {
+                    let r = &self.resources;
+                    SlurmOverrides {
+                        partition: r.partition.clone(),
+                        time: r.time.clone(),
+                        mem: r.mem.clone(),
+                        cpus: r.cpus,
+                        max_parallel: r.max_parallel,
+                    }
+                }),
+            },
+        })
+    }
+}
+
+/// Runs `platefall sweep ...`.
+pub fn run(args: &SweepArgs) -> Exit {
+    match args.request() {
+        Ok(request) => sweep::main(&request, &CommandLineCases),
+        Err(message) => {
+            eprintln!("error: {message}");
+            Exit::BadInput
+        }
+    }
 }

@@ -1,11 +1,11 @@
 //! `platefall bench`: the flow step's cost per cell on several grids, or with `--card` the time to
-//! solution of the card's free fall (see [`crate::bench`]).
+//! solution of the card's free fall (see `crate::bench`).
 use std::path::PathBuf;
 
 use clap::Args;
 
 use super::args::FarFieldArg;
-use crate::bench::{bench_card, bench_one, card_table, table};
+use crate::bench::{bench_card, bench_one, card_table, table, BenchRow, CardRow};
 use platefall_record::files::check_writable;
 use platefall_record::output::write_atomically;
 
@@ -63,7 +63,7 @@ pub fn run_bench(args: &BenchArgs) -> anyhow::Result<()> {
 }
 
 /// The step benchmark, one row per resolution, printed as it goes.
-fn step_rows(args: &BenchArgs) -> anyhow::Result<Vec<crate::bench::BenchRow>> {
+fn step_rows(args: &BenchArgs) -> anyhow::Result<Vec<BenchRow>> {
     let threads = args.threads.unwrap_or(1);
     let resolutions = args.resolutions.clone().unwrap_or(vec![32, 64, 128, 384]);
     eprintln!(
@@ -82,7 +82,7 @@ fn step_rows(args: &BenchArgs) -> anyhow::Result<Vec<crate::bench::BenchRow>> {
 }
 
 /// The card benchmark, one row per resolution, printed as it goes.
-fn card_rows(args: &BenchArgs) -> anyhow::Result<Vec<crate::bench::CardRow>> {
+fn card_rows(args: &BenchArgs) -> anyhow::Result<Vec<CardRow>> {
     let threads = args.threads.unwrap_or(0);
     let resolutions = args.resolutions.clone().unwrap_or(vec![32, 64, 128]);
     eprintln!(

@@ -109,33 +109,33 @@ fn explicit_params() -> FlowParams {
 
 /// Runs to t_end with steps of at most `dt` (landing exactly on t_end) in the solver's frame.
 fn run_to(s: &mut FlowSolver, t_end: f64, dt: f64) {
-    let frame = s.frame;
-    while s.t < t_end - 1e-12 {
+    let frame = *s.frame();
+    while s.t() < t_end - 1e-12 {
         let limit = s.prepare().unwrap();
         assert!(
             dt <= limit * 1.0001,
             "requested dt {dt} exceeds the stability limit {limit}"
         );
-        let n_left = ((t_end - s.t) / dt).round().max(1.0);
-        s.advance((t_end - s.t) / n_left, frame).unwrap();
+        let n_left = ((t_end - s.t()) / dt).round().max(1.0);
+        s.advance((t_end - s.t()) / n_left, frame).unwrap();
     }
 }
 
 /// RMS of the difference between the face velocities and a reference.
 fn rms_error(s: &FlowSolver, reference: impl Fn(f64, f64) -> (f64, f64)) -> f64 {
-    let m = &s.metrics;
-    let (nx, ny) = (s.grid.nx as isize, s.grid.ny as isize);
+    let m = &s.metrics();
+    let (nx, ny) = (s.grid().nx as isize, s.grid().ny as isize);
     let (mut acc, mut n) = (0.0, 0usize);
     for j in 0..ny {
         for i in 0..=nx {
-            let e = s.u.get(i, j) - reference(m.x.node(i), m.y.centre(j)).0;
+            let e = s.u().get(i, j) - reference(m.x.node(i), m.y.centre(j)).0;
             acc += e * e;
             n += 1;
         }
     }
     for j in 0..=ny {
         for i in 0..nx {
-            let e = s.v.get(i, j) - reference(m.x.centre(i), m.y.node(j)).1;
+            let e = s.v().get(i, j) - reference(m.x.centre(i), m.y.node(j)).1;
             acc += e * e;
             n += 1;
         }
@@ -341,14 +341,14 @@ fn rigid_rotation_stays_exact(scheme: FarFieldScheme) {
         "{scheme:?}: velocity drifted from rigid rotation: rms {err:e}"
     );
     // Pressure equals θ̇²r²/2 up to the arbitrary constant: compare after removing the mean difference.
-    let g = &s.grid;
+    let g = &s.grid();
     let mut diffs = Vec::new();
     let mut p_scale: f64 = 0.0;
     for j in 0..g.ny {
         for i in 0..g.nx {
             if !g.is_solid(i, j) {
                 let exact = 0.5 * om * om * (g.xc[i].powi(2) + g.yc[j].powi(2));
-                diffs.push(s.p[i + g.nx * j] - exact);
+                diffs.push(s.p()[i + g.nx * j] - exact);
                 p_scale = p_scale.max(exact);
             }
         }
@@ -399,7 +399,7 @@ fn divergence_free(scheme: FarFieldScheme, omega: f64) {
             );
         }
         s.advance(dt, frame).unwrap();
-        let scale = s.max_velocity() / s.grid.h;
+        let scale = s.max_velocity() / s.grid().h;
         let div = s.max_divergence();
         assert!(
             div <= 1e-10 * scale,

@@ -3,22 +3,14 @@
 //! window, which may start a few steps later; extremes exact), and the step count is the run's.
 mod common;
 
+use platefall_core::config::RunBuilder;
 use platefall_core::sim::{History, Quantity, RunRecord};
 use platefall_post::summary::summarize;
 
 #[test]
 fn the_summary_from_a_thinned_history_agrees_with_the_full_one() {
-    let (cfg, rec, full) = common::run(&[
-        "forced",
-        "--rate",
-        "2",
-        "--spinup",
-        "1",
-        "--resolution",
-        "8",
-        "--t-end",
-        "6",
-    ]);
+    let config = RunBuilder::forced(2.0).spinup(1.0).resolution(8).t_end(6.0);
+    let (cfg, rec, full) = common::run(config.build().unwrap());
     assert_eq!(rec.samples.stride(), 1, "the run fits the default capacity");
     let mut thin = History::with_capacity(256);
     rec.samples.iter().for_each(|s| thin.push(*s));

@@ -49,8 +49,8 @@ impl LambOseen {
 /// Circulation and vorticity centroid (body coordinates) over the nodes within `radius` of `at`:
 /// ω = ∂v/∂x − ∂u/∂y at each interior node, weighted by its dual-cell area.
 fn vortex_moments(s: &FlowSolver, at: (f64, f64), radius: f64) -> (f64, (f64, f64)) {
-    let m = &s.metrics;
-    let (nx, ny) = (s.grid.nx as isize, s.grid.ny as isize);
+    let m = &s.metrics();
+    let (nx, ny) = (s.grid().nx as isize, s.grid().ny as isize);
     let (mut circ, mut mx, mut my) = (0.0, 0.0, 0.0);
     for j in 1..ny {
         for i in 1..nx {
@@ -59,8 +59,8 @@ fn vortex_moments(s: &FlowSolver, at: (f64, f64), radius: f64) -> (f64, (f64, f6
                 continue;
             }
             let (gx, gy) = (m.x.centre_gap(i), m.y.centre_gap(j));
-            let w =
-                (s.v.get(i, j) - s.v.get(i - 1, j)) / gx - (s.u.get(i, j) - s.u.get(i, j - 1)) / gy;
+            let w = (s.v().get(i, j) - s.v().get(i - 1, j)) / gx
+                - (s.u().get(i, j) - s.u().get(i, j - 1)) / gy;
             let area = gx * gy;
             circ += w * area;
             mx += w * area * x;
@@ -110,11 +110,11 @@ fn half_a_turn(dt: f64) -> (f64, f64, u64, f64) {
     });
     let t_end = PI / vortex.omega;
     let mut ratio: f64 = f64::INFINITY;
-    while s.t < t_end - 1e-12 {
+    while s.t() < t_end - 1e-12 {
         let step = dt.min(s.prepare().unwrap());
-        let n_left = ((t_end - s.t) / step).ceil().max(1.0);
-        ratio = ratio.min((t_end - s.t) / n_left / explicit_limit);
-        s.advance((t_end - s.t) / n_left, frame).unwrap();
+        let n_left = ((t_end - s.t()) / step).ceil().max(1.0);
+        ratio = ratio.min((t_end - s.t()) / n_left / explicit_limit);
+        s.advance((t_end - s.t()) / n_left, frame).unwrap();
     }
     let at = vortex.centre_body(t_end);
     let (circ, (cx, cy)) = vortex_moments(&s, at, 3.0 * vortex.sigma2(t_end).sqrt());
@@ -122,7 +122,7 @@ fn half_a_turn(dt: f64) -> (f64, f64, u64, f64) {
     (
         circ / exact_circ,
         (cx - at.0).hypot(cy - at.1),
-        s.steps,
+        s.steps(),
         ratio,
     )
 }
@@ -154,19 +154,19 @@ fn a_lamb_oseen_vortex_crosses_the_far_field_of_a_spinning_grid() {
 }
 
 mod common;
+use platefall_core::config::{Plate, RunBuilder};
 use platefall_core::sim::{RunRecord, RunStatus, StepSample};
 use platefall_post::analysis::{mean_over, TimeWindow};
 
 /// The card's free fall with today's explicit far field, turns 1–5 after release (the summary's
 /// developed part: whole turns 2..=5), measured once with `platefall free --resolution N
-/// --turns 5 --far-field explicit` (byte-identical to the scheme before issue 8): (mean V,
-/// mean θ̇, mean γ) in c/U units. (At N = 64 the same means were 1.1672, 2.4696, −0.3950.)
+/// --turns 5 --far-field explicit`: (mean V, mean θ̇, mean γ) in c/U units. (At N = 64 the same means were 1.1672, 2.4696, −0.3950.)
 const EXPLICIT_N32: (f64, f64, f64) = (1.156367689192568, 2.9623540744233803, -0.3734215277491281);
 /// Runs the card at N for 5 turns and compares its means with the explicit scheme's: V and θ̇
 /// within 2 %, γ within 0.02 rad. Returns the run.
 fn card_agrees_with_the_explicit_scheme(n: usize, explicit: (f64, f64, f64)) -> RunRecord {
-    let res = n.to_string();
-    let (_, rec, s) = common::run(&["free", "--resolution", &res, "--turns", "5", "--no-save"]);
+    let config = RunBuilder::free(Plate::card()).resolution(n).turns(5.0);
+    let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
     let (v, w, g) = (
         s.mean_speed.unwrap(),
@@ -250,10 +250,11 @@ fn first_turns(rec: &RunRecord, turns: f64) -> (f64, f64, f64) {
 fn the_card_at_n64_follows_the_explicit_scheme_in_few_steps_at_any_extent() {
     // At N = 64 the card's turns become irregular from the third turn on: the smallest change of
     // the computation (a 2 % smaller CFL, or strong instead of explicit coupling, both with the
-    // explicit far field) changes the mean θ̇ of turns 3–5 by several per cent (README, "What the
-    // figures say"). Before that the motion is deterministic, so the first two turns after
+    // explicit far field) changes the mean θ̇ of turns 3–5 by several per cent
+    // (docs/verification.md, "Two branches of the card"). Before that the motion is deterministic, so the first two turns after
     // release are compared with the explicit scheme: V and θ̇ within 2 %, γ within 0.02 rad.
-    let (_, rec, _) = common::run(&["free", "--resolution", "64", "--turns", "5", "--no-save"]);
+    let card = || RunBuilder::free(Plate::card()).resolution(64);
+    let (_, rec, _) = common::run(card().turns(5.0).build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
     let (v, w, g) = first_turns(&rec, 2.0);
     let (ve, we, ge) = EXPLICIT_N64_TURNS_1_2;
@@ -268,16 +269,7 @@ fn the_card_at_n64_follows_the_explicit_scheme_in_few_steps_at_any_extent() {
     assert!((g - ge).abs() < 0.02, "mean γ {g} vs {ge}");
     let spt = steps_per_turn(&rec);
     // Doubling the extent: the far field no longer sets Δt.
-    let (_, wide, _) = common::run(&[
-        "free",
-        "--resolution",
-        "64",
-        "--turns",
-        "3",
-        "--extent",
-        "30",
-        "--no-save",
-    ]);
+    let (_, wide, _) = common::run(card().turns(3.0).extent(30.0).build().unwrap());
     let spt_wide = steps_per_turn(&wide);
     eprintln!(
         "N = 64: {spt:.0} steps per turn at extent 15, {spt_wide:.0} at 30 (explicit: 12,400)"
@@ -291,27 +283,19 @@ fn forced_rotation_takes_as_many_steps_per_turn_at_any_extent() {
     // A plate forced to turn at θ̇ = 2.5 (the card's developed rate) at N = 32: over the second
     // turn, doubling the extent from 15 to 30 chords changes the steps by less than 10 % (with the
     // explicit far field they double: 2π·15.5·N/CFL per turn).
-    let steps = |extent: &str| {
-        let (_, rec, _) = common::run(&[
-            "forced",
-            "--rate",
-            "2.5",
-            "--spinup",
-            "1",
-            "--resolution",
-            "32",
-            "--extent",
-            extent,
-            "--t-end",
-            "6.1",
-            "--no-save",
-        ]);
+    let steps = |extent: f64| {
+        let config = RunBuilder::forced(2.5)
+            .spinup(1.0)
+            .resolution(32)
+            .extent(extent)
+            .t_end(6.1);
+        let (_, rec, _) = common::run(config.build().unwrap());
         assert_eq!(rec.status, RunStatus::Completed);
         // Steps over the second turn: t from 1 + 2π/2.5 to 1 + 4π/2.5.
         let (t0, t1) = (1.0 + 2.0 * PI / 2.5, 1.0 + 4.0 * PI / 2.5);
         rec.samples.iter().filter(|x| x.t > t0 && x.t <= t1).count() as f64
     };
-    let (a, b) = (steps("15"), steps("30"));
+    let (a, b) = (steps(15.0), steps(30.0));
     eprintln!("steps over a turn at θ̇ = 2.5: {a} at extent 15, {b} at extent 30");
     assert!((b / a - 1.0).abs() < 0.10, "{b} vs {a}");
     assert!(a <= 1500.0, "{a} steps per turn");

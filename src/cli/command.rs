@@ -1,0 +1,77 @@
+//! The command line's grammar: the subcommands and their options (clap), and the one function
+//! that parses an argument vector.
+use std::ffi::OsString;
+
+use clap::{Parser, Subcommand};
+
+use super::args::{ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs};
+use super::bench_args::BenchArgs;
+use super::record_args::RecordArgs;
+use super::sweep_args::SweepArgs;
+use crate::exit::Exit;
+
+/// A thin plate falling through a viscous fluid: 2-D Navier–Stokes in a body-fixed grid coupled to
+/// the plate's flight mechanics, streamed live to the Rerun viewer.
+///
+/// All quantities are non-dimensional: lengths on the chord c, speeds on the reference speed U,
+/// time on c/U (one "convective time").
+#[derive(Parser, Debug)]
+#[command(
+    name = "platefall",
+    version,
+    about,
+    long_about,
+    propagate_version = true,
+    after_help = Exit::help(false)
+)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Case A: a plate impulsively started at a fixed angle of attack (vortex shedding, C_L, C_D, Strouhal).
+    #[command(after_help = Exit::help(false))]
+    Static(StaticArgs),
+    /// Case B: a translating plate spun up at constant angular acceleration to a rate, then held.
+    #[command(after_help = Exit::help(false))]
+    Forced(ForcedArgs),
+    /// Case C: a translating plate free to rotate about its centre (pinned autorotation).
+    #[command(after_help = Exit::help(false))]
+    Pinned(PinnedArgs),
+    /// Case D: a plate released into free fall under gravity (the tumbling card).
+    #[command(after_help = Exit::help(false))]
+    Free(FreeArgs),
+    /// Time the flow step alone on several grid sizes (ns per cell per step, momentum vs pressure).
+    Bench(BenchArgs),
+    /// Run a parameter sweep from a plan file, locally or as a Slurm job array, and merge it into
+    /// a results table and a phase diagram.
+    Sweep(SweepArgs),
+}
+
+impl Command {
+    /// The options every case subcommand shares: the solver's and the recording's (None for bench
+    /// and sweep).
+    pub fn case_args(&self) -> Option<(&SolverArgs, &RecordArgs)> {
+        match self {
+            Command::Static(a) => Some((&a.solver, &a.record)),
+            Command::Forced(a) => Some((&a.solver, &a.record)),
+            Command::Pinned(a) => Some((&a.solver, &a.record)),
+            Command::Free(a) => Some((&a.solver, &a.record)),
+            Command::Bench(_) | Command::Sweep(_) => None,
+        }
+    }
+}
+
+/// Parses an argument vector (the program's name first): the process's own, or the one a sweep
+/// case's child process will be started with.
+pub fn parse<I, T>(argv: I) -> Result<Cli, clap::Error>
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    Cli::try_parse_from(argv)
+}

@@ -1,0 +1,55 @@
+//! What the sweep needs to know of the case subcommands, answered by the command line: the
+//! options each one takes (clap's own definitions), and the run an argument vector describes
+//! (parsed and validated exactly as a typed command line; it is the argument vector the case's
+//! child process is started with).
+use clap::CommandFactory;
+
+use super::command::{parse, Cli};
+use super::config::run_config;
+use crate::sweep::{CaseCommands, OptionInfo, PlanError};
+use platefall_core::sim::{CaseKind, ValidatedConfig};
+
+/// The case subcommands of this command line.
+pub(crate) struct CommandLineCases;
+
+impl CaseCommands for CommandLineCases {
+    fn options(&self, case: CaseKind) -> Vec<OptionInfo> {
+        let cmd = Cli::command();
+        let Some(sub) = cmd.find_subcommand(case.name()) else {
+            return Vec::new();
+        };
+        sub.get_arguments()
+            .filter_map(|a| {
+                let name = a.get_long()?;
+                if name == "help" || name == "version" {
+                    return None;
+                }
+                Some(OptionInfo {
+                    name: name.to_string(),
+                    takes_value: a.get_action().takes_values(),
+                })
+            })
+            .collect()
+    }
+
+    fn config(&self, args: &[String]) -> Result<ValidatedConfig, PlanError> {
+        let argv = std::iter::once("platefall".to_string()).chain(args.iter().cloned());
+        let cli = parse(argv).map_err(|e| PlanError(clap_one_line(&e)))?;
+        run_config(&cli.command).map_err(|e| PlanError(e.to_string()))
+    }
+}
+
+/// clap's error (several lines with usage and tips) as one line.
+fn clap_one_line(e: &clap::Error) -> String {
+    let text = e.render().to_string();
+    let mut lines = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with("Usage:") && !l.starts_with("For more"));
+    let first = lines.next().unwrap_or("invalid arguments");
+    let first = first.strip_prefix("error: ").unwrap_or(first);
+    match lines.find(|l| l.starts_with("tip:")) {
+        Some(tip) => format!("{first} ({tip})"),
+        None => first.to_string(),
+    }
+}
