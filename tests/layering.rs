@@ -102,7 +102,7 @@ fn only_the_viewer_knows_rerun() {
         "the recording crate's files were not found"
     );
     let root = env!("CARGO_MANIFEST_DIR");
-    let mut parts: Vec<&str> = rerun_free
+    let parts: Vec<&str> = rerun_free
         .iter()
         .map(|p| p.strip_prefix(root).unwrap_or(p).trim_start_matches('/'))
         .collect();

@@ -134,7 +134,7 @@ mod tests {
                 }
                 Row {
                     case,
-                    status,
+                    status: *status,
                     exit_code: Some(0),
                     message: String::new(),
                     recording: None,

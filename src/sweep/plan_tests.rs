@@ -104,7 +104,7 @@ fn flags_text_and_negative_values_become_arguments() {
             "--preset=card"
         ]
     );
-    assert!(super::validate::validate_case(&args[0]).is_ok());
+    assert!(super::options::CaseCommands::config(&CommandLineCases, &args[0]).is_ok());
     let flags = args_of("case = \"static\"\n[grid]\nseed-grid = [true, false]\n");
     assert_eq!(flags, [vec!["static", "--seed-grid"], vec!["static"]]);
 }

@@ -663,7 +663,7 @@ mod tests {
         assert_eq!(
             run.title(),
             "free fall from rest at θ₀ = 0.2 rad, 10 × 0.5 mm plate of 2700 kg/m³ in water, \
-             Re 911.1, N = 16"
+             Re 911, N = 16"
         );
         let thin = RunBuilder::free(plate)
             .thickness(1.0 / 16.0)

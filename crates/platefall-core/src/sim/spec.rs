@@ -223,7 +223,9 @@ impl RunConfig {
                     r(spinup)
                 )
             }
-            Case::Pinned { alpha0, speed, .. } if speed == 0.0 => {
+            Case::Pinned {
+                alpha0, speed: 0.0, ..
+            } => {
                 format!(
                     "pinned plate in still fluid, released at θ₀ = {} rad",
                     r(alpha0)
@@ -235,8 +237,11 @@ impl RunConfig {
                 r(alpha0)
             ),
             Case::Free {
-                v0, gamma0, alpha0, ..
-            } if v0 == 0.0 => format!("free fall from rest at θ₀ = {} rad", r(gamma0 + alpha0)),
+                v0: 0.0,
+                gamma0,
+                alpha0,
+                ..
+            } => format!("free fall from rest at θ₀ = {} rad", r(gamma0 + alpha0)),
             Case::Free {
                 v0, gamma0, alpha0, ..
             } => format!(

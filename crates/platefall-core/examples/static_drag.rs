@@ -1,14 +1,15 @@
 //! A static plate at α = 0.4 run from Rust: describe the run, step it to the end, print C_D.
-use platefall_core::grid::GridSpec;
-use platefall_core::sim::{Case, RunConfig, Simulation};
+//!
+//! `cargo run --release -p platefall-core --example static_drag`
+use platefall_core::config::RunBuilder;
+use platefall_core::sim::Simulation;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let case = Case::Static {
-        alpha: 0.4,
-        kick: 0.0,
-    };
-    let mut config = RunConfig::new(case, GridSpec::modern(16));
-    config.time.t_end = 10.0;
+    let config = RunBuilder::static_plate(0.4)
+        .kick(0.0)
+        .resolution(16)
+        .t_end(10.0)
+        .build()?;
     let mut sim = Simulation::new(config)?;
     while !sim.finished() {
         sim.step()?;

@@ -3,31 +3,40 @@
 //! on one thread; the best block of each gives ns per cell per step. Also times the set-up of the
 //! added-mass matrix K (three projections).
 //!
-//! `cargo run --release --example coupling_cost [N ...]` (default 32 64).
+//! `cargo run --release -p platefall-core --example coupling_cost [N ...]` (default 32 64).
 use std::time::Instant;
 
-use clap::Parser;
-use platefall::cli::{run_config, Cli};
-use platefall_core::body::{Dof, StrongCoupling};
-use platefall_core::flow::AddedMass;
-use platefall_core::sim::Simulation;
+use platefall_core::body::{Coupling, Dof, StrongCoupling};
+use platefall_core::config::{Plate, RunBuilder};
+use platefall_core::flow::{AddedMass, FlowSolver, OuterBc};
+use platefall_core::sim::{Simulation, ValidatedConfig};
 
 const WARMUP: usize = 20;
 const BLOCK: usize = 100;
 const ROUNDS: usize = 4;
 
-fn simulation(n: usize, coupling: &str) -> Simulation {
-    let args = [
-        "platefall",
-        "free",
-        "--develop",
-        "0",
-        "--coupling",
-        coupling,
-    ];
-    let res = n.to_string();
-    let cli = Cli::parse_from(args.iter().copied().chain(["--resolution", res.as_str()]));
-    Simulation::new(run_config(&cli.command).expect("valid")).expect("builds")
+/// `platefall free --develop 0 --coupling C --resolution N`.
+fn config(n: usize, coupling: Coupling) -> ValidatedConfig {
+    RunBuilder::free(Plate::card())
+        .develop(0.0)
+        .coupling(coupling)
+        .resolution(n)
+        .build()
+        .expect("valid")
+}
+
+fn simulation(n: usize, coupling: Coupling) -> Simulation {
+    Simulation::new(config(n, coupling)).expect("builds")
+}
+
+/// Milliseconds to set up K (three projections) on a fresh flow solver of the run.
+fn k_setup_ms(n: usize) -> (f64, AddedMass) {
+    let (config, grid) = config(n, Coupling::Strong).into_parts();
+    let frame = config.case.prescribed_state(0.0).frame();
+    let mut flow = FlowSolver::new(grid, config.flow.clone(), OuterBc::FarField, frame).unwrap();
+    let t = Instant::now();
+    let k = flow.added_mass();
+    (1e3 * t.elapsed().as_secs_f64(), k)
 }
 
 /// Seconds for `BLOCK` steps.
@@ -42,15 +51,20 @@ fn block(sim: &mut Simulation) -> f64 {
 /// Nanoseconds of the strong coupling's own work per step (removing K Δq/Δt from the loads and
 /// solving the body's equations), timed over many calls.
 fn coupling_ns(sim: &Simulation, k: AddedMass) -> f64 {
-    let props = sim.config.body.as_ref().unwrap().props;
+    let props = sim.config().body.as_ref().unwrap().props;
     let sc = StrongCoupling::new(&props, k).unwrap();
-    let (flow, mut state) = (&sim.flow, sim.state);
+    let (flow, mut state) = (sim.flow(), *sim.state());
     let calls = 1_000_000;
     let t = Instant::now();
     let mut acc = 0.0;
     for i in 0..calls {
         state.omega += 1e-9 * i as f64;
-        let rest = k.rest(&flow.loads(), &flow.frame, &flow.frame_prev, flow.dt_prev);
+        let rest = k.rest(
+            &flow.loads(),
+            flow.frame(),
+            flow.frame_prev(),
+            flow.dt_prev(),
+        );
         acc += sc.derivative(&props, Dof::Free, &state, rest, 1e-3)[3];
     }
     let ns = 1e9 * t.elapsed().as_secs_f64() / calls as f64;
@@ -66,11 +80,9 @@ fn main() {
     let ns = if ns.is_empty() { vec![32, 64] } else { ns };
     println!("   N     cells   K set-up ms   explicit   strong   (ns per cell per step, best of {ROUNDS} blocks of {BLOCK})   extra");
     for n in ns {
-        let mut strong = simulation(n, "strong");
-        let mut explicit = simulation(n, "explicit");
-        let t = Instant::now();
-        let k = strong.flow.added_mass();
-        let setup_ms = 1e3 * t.elapsed().as_secs_f64();
+        let mut strong = simulation(n, Coupling::Strong);
+        let mut explicit = simulation(n, Coupling::Explicit);
+        let (setup_ms, k) = k_setup_ms(n);
         assert_eq!(Some(k), strong.added_mass());
         for _ in 0..WARMUP {
             strong.step().unwrap();
@@ -81,7 +93,7 @@ fn main() {
             best_x = best_x.min(block(&mut explicit));
             best_s = best_s.min(block(&mut strong));
         }
-        let cells = strong.flow.grid.cells();
+        let cells = strong.flow().grid().cells();
         let per = 1e9 / (BLOCK as f64 * cells as f64);
         let own = coupling_ns(&strong, k);
         println!(
