@@ -21,23 +21,23 @@ use platefall_core::grid::{Grid, GridSpec};
 use platefall_core::sim::{Case, Simulation};
 
 #[derive(Clone, Debug, Serialize)]
-pub struct BenchRow {
-    pub resolution: usize,
-    pub nx: usize,
-    pub ny: usize,
-    pub cells: usize,
-    pub factor_nnz: usize,
-    pub setup_seconds: f64,
-    pub steps: usize,
-    pub threads: usize,
-    pub momentum_ns_per_cell: f64,
-    pub pressure_ns_per_cell: f64,
-    pub total_ns_per_cell: f64,
+pub(crate) struct BenchRow {
+    pub(crate) resolution: usize,
+    pub(crate) nx: usize,
+    pub(crate) ny: usize,
+    pub(crate) cells: usize,
+    pub(crate) factor_nnz: usize,
+    pub(crate) setup_seconds: f64,
+    pub(crate) steps: usize,
+    pub(crate) threads: usize,
+    pub(crate) momentum_ns_per_cell: f64,
+    pub(crate) pressure_ns_per_cell: f64,
+    pub(crate) total_ns_per_cell: f64,
 }
 
 /// Times `steps` steps of a plate translating at α = 0.4 and spinning at θ̇ = 1 (so every term of the
 /// mixed-frame equations is active) after 5 warm-up steps, with `threads` workers.
-pub fn bench_one(
+pub(crate) fn bench_one(
     resolution: usize,
     steps: usize,
     scheme: FarFieldScheme,
@@ -96,7 +96,7 @@ fn time_steps(flow: &mut FlowSolver, case: &Case, steps: usize) -> anyhow::Resul
 }
 
 /// A plain-text table of the rows.
-pub fn table(rows: &[BenchRow]) -> String {
+pub(crate) fn table(rows: &[BenchRow]) -> String {
     let head = "   N      grid     cells  factor nnz  setup s  threads   momentum  projection     total   (ns per cell per step)\n";
     head.to_string() + &rows.iter().map(|r| r.to_string()).collect::<String>()
 }
@@ -122,28 +122,28 @@ impl std::fmt::Display for BenchRow {
 
 /// Time to solution of the card's free fall at one resolution.
 #[derive(Clone, Debug, Serialize)]
-pub struct CardRow {
-    pub resolution: usize,
-    pub cells: usize,
-    pub far_field: FarFieldScheme,
+pub(crate) struct CardRow {
+    pub(crate) resolution: usize,
+    pub(crate) cells: usize,
+    pub(crate) far_field: FarFieldScheme,
     /// Whole turns after the first complete turn after release that were timed.
-    pub turns_timed: usize,
-    pub steps_per_turn: f64,
+    pub(crate) turns_timed: usize,
+    pub(crate) steps_per_turn: f64,
     /// Workers of the all-core pool.
-    pub threads: usize,
-    pub ns_per_cell_step_all: f64,
-    pub ns_per_cell_step_one: f64,
-    pub seconds_per_turn_all: f64,
-    pub seconds_per_turn_one: f64,
+    pub(crate) threads: usize,
+    pub(crate) ns_per_cell_step_all: f64,
+    pub(crate) ns_per_cell_step_one: f64,
+    pub(crate) seconds_per_turn_all: f64,
+    pub(crate) seconds_per_turn_one: f64,
     /// Steps and seconds of the whole run (development, release, `turns` turns) on all cores.
-    pub steps: u64,
-    pub wall_seconds: f64,
+    pub(crate) steps: u64,
+    pub(crate) wall_seconds: f64,
 }
 
 /// Runs the card's free fall as `platefall free --resolution N --turns T` does (no output) on all cores (`threads`, 0 = one
 /// per core): the developed turns 2..=T give steps per turn and the time per step; then
 /// `single_steps` more steps on one core give the single-core time per step.
-pub fn bench_card(
+pub(crate) fn bench_card(
     resolution: usize,
     turns: usize,
     scheme: FarFieldScheme,
@@ -212,7 +212,7 @@ fn turn_marks(sim: &mut Simulation, turns: usize) -> anyhow::Result<Vec<(u64, f6
 }
 
 /// A plain-text table of the card rows.
-pub fn card_table(rows: &[CardRow]) -> String {
+pub(crate) fn card_table(rows: &[CardRow]) -> String {
     let head = "   N    cells  far field  steps/turn  threads  ns/cell/step (all, 1)  s per turn (all, 1)   run steps   run s\n";
     head.to_string() + &rows.iter().map(|r| r.to_string()).collect::<String>()
 }

@@ -6,7 +6,7 @@ use platefall_core::sim::RunStatus;
 
 /// How platefall ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Exit {
+pub(crate) enum Exit {
     /// 0: the run completed (a sweep: every case completed).
     Completed,
     /// 2: bad input: nothing was run or written.
@@ -21,7 +21,7 @@ pub enum Exit {
 
 impl Exit {
     /// Every code, in order.
-    pub const ALL: [Exit; 5] = [
+    pub(crate) const ALL: [Exit; 5] = [
         Exit::Completed,
         Exit::BadInput,
         Exit::Diverged,
@@ -30,7 +30,7 @@ impl Exit {
     ];
 
     /// The numeric code.
-    pub fn code(self) -> u8 {
+    pub(crate) fn code(self) -> u8 {
         match self {
             Exit::Completed => 0,
             Exit::BadInput => 2,
@@ -41,12 +41,12 @@ impl Exit {
     }
 
     /// The exit of a numeric code, if it is one of platefall's.
-    pub fn from_code(code: i32) -> Option<Exit> {
+    pub(crate) fn from_code(code: i32) -> Option<Exit> {
         Exit::ALL.into_iter().find(|e| i32::from(e.code()) == code)
     }
 
     /// The exit of a run that ended with `status` and wrote every output.
-    pub fn of_status(status: &RunStatus) -> Exit {
+    pub(crate) fn of_status(status: &RunStatus) -> Exit {
         match status {
             RunStatus::Completed => Exit::Completed,
             RunStatus::Diverged(_) => Exit::Diverged,
@@ -94,7 +94,7 @@ impl Exit {
     }
 
     /// The exit-code table of `--help`: for the case subcommands, or (`sweep`) for sweeps.
-    pub fn help(sweep: bool) -> String {
+    pub(crate) fn help(sweep: bool) -> String {
         let mut text = String::from("Exit codes:");
         for e in Exit::ALL {
             let what = if sweep { e.for_sweep() } else { e.for_run() };

@@ -7,7 +7,7 @@
 use anyhow::Context;
 
 /// A pool of `threads` workers (0: one per core, or `RAYON_NUM_THREADS`).
-pub fn pool(threads: usize) -> anyhow::Result<rayon::ThreadPool> {
+pub(crate) fn pool(threads: usize) -> anyhow::Result<rayon::ThreadPool> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .thread_name(|i| format!("platefall-solver-{i}"))

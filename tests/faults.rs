@@ -1,4 +1,4 @@
-//! Fault injection: for each fault, the exit code of the README's table, a one-line message, and
+//! Fault injection: for each fault, the exit code of docs/user-guide.md's table, a one-line message, and
 //! no file at a final name that is not complete (every .rrd there verifies, every CSV and summary
 //! there says how the run ended, no temporary file is left unless the process was killed).
 //!

@@ -17,7 +17,7 @@ pub struct SolverArgs {
     #[arg(long, allow_negative_numbers = true)]
     pub re: Option<f64>,
     /// Cells per chord N (h = c/N). The seed used 16; the free-fall rotation rate changes by 17 %
-    /// between N = 32 and 64 (see the README), so the default is 64.
+    /// between N = 32 and 64 (docs/verification.md), so the default is 64.
     #[arg(long, default_value_t = defaults::RESOLUTION)]
     pub resolution: usize,
     /// End time in convective times c/U from the impulsive start [default depends on the case].
@@ -33,7 +33,7 @@ pub struct SolverArgs {
     /// Plate thickness as a chord fraction, rounded to whole cells [default: one cell, 1/N, the
     /// thinnest plate the grid holds; a real card is about 1/100 of its chord]. Plates two or more
     /// cells thick have blunt edges that can hold a leading-edge vortex in a high-lift state at
-    /// α ≈ 0.4 (see the README).
+    /// α ≈ 0.4 (docs/verification.md).
     #[arg(long, allow_negative_numbers = true)]
     pub thickness: Option<f64>,
     /// Distance from the plate to the outer boundary, in chords.

@@ -1,7 +1,7 @@
 //! The command line: one subcommand per case (SPEC §1) plus `bench` and `sweep`. The only layer
 //! that knows clap; it turns flags into the library's typed descriptions (the case options into
 //! [`RunBuilder`](platefall_core::config::RunBuilder)s, the sweep's into a sweep request) and
-//! typed errors into one-line messages that name the flag and an [`Exit`] code.
+//! typed errors into one-line messages that name the flag and an exit code (`Exit`).
 //!
 //! Files, each using only those after it: `command` (the grammar), `config` (a case's run),
 //! `run` (running it), `sweep_args` and `sweep_cases` (the sweep's options and what it needs to

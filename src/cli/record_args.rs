@@ -290,10 +290,10 @@ impl RecordArgs {
         if !self.serve {
             return Ok(None);
         }
-        viewer::check_memory_limit(&self.server_memory_limit).map_err(|reason| {
+        viewer::check_memory_limit(&self.server_memory_limit).map_err(|e| {
             OptionsError::MemoryLimit {
                 value: self.server_memory_limit.clone(),
-                reason,
+                reason: e.0,
             }
         })?;
         let addr = SocketAddr::new(self.bind, self.port);
@@ -315,9 +315,9 @@ impl RecordArgs {
         let Some(url) = &self.connect else {
             return Ok(None);
         };
-        viewer::check_proxy_url(url).map_err(|reason| OptionsError::ConnectUrl {
+        viewer::check_proxy_url(url).map_err(|e| OptionsError::ConnectUrl {
             value: url.clone(),
-            reason,
+            reason: e.0,
         })?;
         Ok(Some(url.clone()))
     }
@@ -364,7 +364,7 @@ impl RecordArgs {
                 create_dir: false,
             });
         }
-        check_outputs(&outputs).map_err(|p| path_error(p.flag, &p.path, p.reason))
+        check_outputs(&outputs).map_err(|p| path_error(p.flag, &p.path, p.reason.to_string()))
     }
 }
 

@@ -6,13 +6,13 @@ use super::plan::{plan_err, CaseSpec, Plan, PlanError};
 use super::values::Value;
 
 /// Most cases one plan may hold.
-pub const MAX_CASES: usize = 100_000;
+pub(crate) const MAX_CASES: usize = 100_000;
 /// Longest parameter part of a case id (the index prefix keeps ids unique when it is cut).
 const MAX_ID_PARAMS: usize = 120;
 
 impl Plan {
     /// Number of cases.
-    pub fn case_count(&self) -> usize {
+    pub(crate) fn case_count(&self) -> usize {
         let grid: usize = self.grid.iter().map(|a| a.values.len()).product();
         grid * self.zip.first().map_or(1, |a| a.values.len())
     }
@@ -65,7 +65,7 @@ impl Plan {
     }
 
     /// All cases, unchecked.
-    pub fn cases(&self) -> Vec<CaseSpec> {
+    pub(crate) fn cases(&self) -> Vec<CaseSpec> {
         let n = self.case_count();
         let width = n.saturating_sub(1).to_string().len().max(4);
         (0..n).map(|i| self.case(i, width)).collect()
@@ -73,7 +73,10 @@ impl Plan {
 
     /// All cases, each checked as the command line would check it, and the diagram's value key
     /// checked against the case's summary keys.
-    pub fn checked_cases(&self, commands: &dyn CaseCommands) -> Result<Vec<CaseSpec>, PlanError> {
+    pub(crate) fn checked_cases(
+        &self,
+        commands: &dyn CaseCommands,
+    ) -> Result<Vec<CaseSpec>, PlanError> {
         let n = self.case_count();
         if n > MAX_CASES {
             return Err(plan_err!(

@@ -31,37 +31,37 @@ fn write_status(layout: &Layout, id: &str, status: &CaseStatus) -> Result<(), Ou
 
 /// What `status.json` says about a case's last attempt.
 #[derive(Clone, Debug, Default, Serialize, Deserialize, PartialEq)]
-pub struct CaseStatus {
+pub(crate) struct CaseStatus {
     /// "running" while the attempt runs, "exited" after it.
-    pub state: String,
-    pub attempt: u32,
-    pub host: String,
-    pub pid: u32,
-    pub started: String,
-    pub started_unix: f64,
+    pub(crate) state: String,
+    pub(crate) attempt: u32,
+    pub(crate) host: String,
+    pub(crate) pid: u32,
+    pub(crate) started: String,
+    pub(crate) started_unix: f64,
     #[serde(default)]
-    pub finished: Option<String>,
+    pub(crate) finished: Option<String>,
     /// Wall time of the child process, seconds.
     #[serde(default)]
-    pub elapsed_seconds: Option<f64>,
+    pub(crate) elapsed_seconds: Option<f64>,
     #[serde(default)]
-    pub exit_code: Option<i32>,
+    pub(crate) exit_code: Option<i32>,
     /// The signal that ended the process, if one did.
     #[serde(default)]
-    pub signal: Option<i32>,
+    pub(crate) signal: Option<i32>,
     /// The last error line of the attempt's log (or what ended it).
     #[serde(default)]
-    pub message: String,
+    pub(crate) message: String,
 }
 
 /// Reads a case's `status.json`, if there is a readable one.
-pub fn read_status(layout: &Layout, id: &str) -> Option<CaseStatus> {
+pub(crate) fn read_status(layout: &Layout, id: &str) -> Option<CaseStatus> {
     let text = std::fs::read_to_string(layout.status(id)).ok()?;
     serde_json::from_str(&text).ok()
 }
 
 /// The `status` of a case's summary, if the summary exists at its final name.
-pub fn summary_status(layout: &Layout, id: &str) -> Option<StatusKind> {
+pub(crate) fn summary_status(layout: &Layout, id: &str) -> Option<StatusKind> {
     let text = std::fs::read_to_string(layout.summary(id)).ok()?;
     let v: serde_json::Value = serde_json::from_str(&text).ok()?;
     serde_json::from_value(v.get("status")?.clone()).ok()
@@ -69,7 +69,7 @@ pub fn summary_status(layout: &Layout, id: &str) -> Option<StatusKind> {
 
 /// A case is done when its summary says completed or diverged (a finished failure); an
 /// interrupted or missing summary means it runs again.
-pub fn is_done(layout: &Layout, id: &str) -> bool {
+pub(crate) fn is_done(layout: &Layout, id: &str) -> bool {
     matches!(
         summary_status(layout, id),
         Some(StatusKind::Completed | StatusKind::Diverged)
@@ -77,7 +77,7 @@ pub fn is_done(layout: &Layout, id: &str) -> bool {
 }
 
 /// The full argument vector of a case: its options plus the outputs the sweep manages.
-pub fn full_args(layout: &Layout, case: &CaseSpec, recording: bool) -> Vec<String> {
+pub(crate) fn full_args(layout: &Layout, case: &CaseSpec, recording: bool) -> Vec<String> {
     let path = |p: std::path::PathBuf| p.to_string_lossy().into_owned();
     let mut args = case.args.clone();
     args.push(format!("--summary={}", path(layout.summary(&case.id))));
@@ -92,10 +92,10 @@ pub fn full_args(layout: &Layout, case: &CaseSpec, recording: bool) -> Vec<Strin
 }
 
 /// A running case.
-pub struct Running {
-    pub case: CaseSpec,
-    pub child: Child,
-    pub status: CaseStatus,
+pub(crate) struct Running {
+    pub(crate) case: CaseSpec,
+    pub(crate) child: Child,
+    pub(crate) status: CaseStatus,
     started: Instant,
     /// Where the child's own lines start in the log.
     log_start: u64,
@@ -103,7 +103,7 @@ pub struct Running {
 
 /// Starts a case: removes a stale summary, appends an attempt header to its log, records
 /// `status.json` as running, and spawns `exe` with the case's arguments.
-pub fn launch(
+pub(crate) fn launch(
     exe: &Path,
     layout: &Layout,
     case: &CaseSpec,
@@ -158,7 +158,7 @@ pub fn launch(
 }
 
 /// Records in `status.json` that a case could not be started (best effort), and returns that status.
-pub fn launch_failed(layout: &Layout, case: &CaseSpec, err: &std::io::Error) -> CaseStatus {
+pub(crate) fn launch_failed(layout: &Layout, case: &CaseSpec, err: &std::io::Error) -> CaseStatus {
     let now = SystemTime::now();
     let status = CaseStatus {
         state: "exited".into(),
@@ -195,7 +195,7 @@ fn stop_with_parent(cmd: &mut Command) {
 }
 
 /// Sends SIGINT (Ctrl-C) to a running case, or kills it where there are no signals.
-pub fn interrupt(r: &mut Running, hard: bool) {
+pub(crate) fn interrupt(r: &mut Running, hard: bool) {
     #[cfg(unix)]
     {
         let sig = if hard { libc::SIGKILL } else { libc::SIGINT };
@@ -212,7 +212,7 @@ pub fn interrupt(r: &mut Running, hard: bool) {
 }
 
 /// Records how a case ended in its `status.json`, and returns that status.
-pub fn finish(layout: &Layout, mut r: Running, exit: ExitStatus) -> CaseStatus {
+pub(crate) fn finish(layout: &Layout, mut r: Running, exit: ExitStatus) -> CaseStatus {
     let id = r.case.id.clone();
     let now = SystemTime::now();
     r.status.state = "exited".into();
@@ -245,7 +245,7 @@ fn exit_signal(exit: &ExitStatus) -> Option<i32> {
 }
 
 /// The attempt's last `error:` line, else its last `interrupted` line, else its last line.
-pub fn last_error_line(log: &Path, from: u64) -> String {
+pub(crate) fn last_error_line(log: &Path, from: u64) -> String {
     let mut text = String::new();
     if let Ok(mut f) = std::fs::File::open(log) {
         if f.seek(SeekFrom::Start(from)).is_ok() {

@@ -54,7 +54,7 @@ fn regime_of(row: &Row) -> Option<Regime> {
 }
 
 /// The phase diagram of a plan's results.
-pub fn diagram_data(plan: &Plan, rows: &[Row]) -> DiagramData {
+pub(crate) fn diagram_data(plan: &Plan, rows: &[Row]) -> DiagramData {
     let d = &plan.diagram;
     let find = |name: &str| plan.grid.iter().chain(&plan.zip).find(|a| a.name == name);
     let x_axis = find(&d.x).map(|a| plot_axis(a, d.x_scale));

@@ -6,7 +6,7 @@ use serde::de::{Deserializer, MapAccess, Visitor};
 use serde_json::Value;
 
 /// A JSON object as (key, value) pairs in file order.
-pub type Object = Vec<(String, Value)>;
+pub(crate) type Object = Vec<(String, Value)>;
 
 struct ObjectVisitor;
 
@@ -25,7 +25,7 @@ impl<'de> Visitor<'de> for ObjectVisitor {
 }
 
 /// Parses a JSON object keeping its key order.
-pub fn parse_object(text: &str) -> Result<Object, serde_json::Error> {
+pub(crate) fn parse_object(text: &str) -> Result<Object, serde_json::Error> {
     let mut de = serde_json::Deserializer::from_str(text);
     let object = de.deserialize_map(ObjectVisitor)?;
     de.end()?;
@@ -33,6 +33,6 @@ pub fn parse_object(text: &str) -> Result<Object, serde_json::Error> {
 }
 
 /// The value of `key` in an object.
-pub fn get<'a>(object: &'a Object, key: &str) -> Option<&'a Value> {
+pub(crate) fn get<'a>(object: &'a Object, key: &str) -> Option<&'a Value> {
     object.iter().find(|(k, _)| k == key).map(|(_, v)| v)
 }

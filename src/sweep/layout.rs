@@ -15,62 +15,62 @@ const MANIFEST_FORMAT: u32 = 1;
 
 /// Paths inside one sweep directory (absolute).
 #[derive(Clone, Debug)]
-pub struct Layout {
-    pub dir: PathBuf,
+pub(crate) struct Layout {
+    pub(crate) dir: PathBuf,
 }
 
 impl Layout {
     /// The layout of `dir`, made absolute against the current directory.
-    pub fn new(dir: &Path) -> Layout {
+    pub(crate) fn new(dir: &Path) -> Layout {
         let dir = std::path::absolute(dir).unwrap_or_else(|_| dir.to_path_buf());
         Layout { dir }
     }
-    pub fn case_dir(&self, id: &str) -> PathBuf {
+    pub(crate) fn case_dir(&self, id: &str) -> PathBuf {
         self.dir.join("cases").join(id)
     }
-    pub fn summary(&self, id: &str) -> PathBuf {
+    pub(crate) fn summary(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("summary.json")
     }
-    pub fn csv(&self, id: &str) -> PathBuf {
+    pub(crate) fn csv(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("run.csv")
     }
-    pub fn recording(&self, id: &str) -> PathBuf {
+    pub(crate) fn recording(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("run.rrd")
     }
-    pub fn log(&self, id: &str) -> PathBuf {
+    pub(crate) fn log(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("log.txt")
     }
-    pub fn status(&self, id: &str) -> PathBuf {
+    pub(crate) fn status(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("status.json")
     }
-    pub fn plan(&self) -> PathBuf {
+    pub(crate) fn plan(&self) -> PathBuf {
         self.dir.join("plan.toml")
     }
-    pub fn manifest(&self) -> PathBuf {
+    pub(crate) fn manifest(&self) -> PathBuf {
         self.dir.join("sweep.json")
     }
-    pub fn output(&self, name: &str) -> PathBuf {
+    pub(crate) fn output(&self, name: &str) -> PathBuf {
         self.dir.join(name)
     }
-    pub fn slurm_logs(&self) -> PathBuf {
+    pub(crate) fn slurm_logs(&self) -> PathBuf {
         self.dir.join("slurm")
     }
 }
 
 /// `sweep.json`: the expanded cases; a directory belongs to the plan that made it.
 #[derive(Clone, Debug, Serialize, Deserialize, PartialEq)]
-pub struct Manifest {
-    pub format: u32,
+pub(crate) struct Manifest {
+    pub(crate) format: u32,
     /// The plan's name (titles); not part of what makes two plans different.
     #[serde(default)]
-    pub name: String,
-    pub case: CaseKind,
-    pub recording: bool,
-    pub cases: Vec<CaseSpec>,
+    pub(crate) name: String,
+    pub(crate) case: CaseKind,
+    pub(crate) recording: bool,
+    pub(crate) cases: Vec<CaseSpec>,
 }
 
 impl Manifest {
-    pub fn of(plan: &Plan, cases: &[CaseSpec]) -> Manifest {
+    pub(crate) fn of(plan: &Plan, cases: &[CaseSpec]) -> Manifest {
         Manifest {
             format: MANIFEST_FORMAT,
             name: plan.name.clone(),
@@ -82,7 +82,7 @@ impl Manifest {
 }
 
 /// Reads `sweep.json` (None if there is none).
-pub fn read_manifest(layout: &Layout) -> Result<Option<Manifest>, Failure> {
+pub(crate) fn read_manifest(layout: &Layout) -> Result<Option<Manifest>, Failure> {
     let path = layout.manifest();
     let text = match std::fs::read_to_string(&path) {
         Ok(t) => t,
@@ -95,7 +95,7 @@ pub fn read_manifest(layout: &Layout) -> Result<Option<Manifest>, Failure> {
 }
 
 /// Why `new` is not the plan that made `old`, if it is not.
-pub fn difference(old: &Manifest, new: &Manifest) -> Option<String> {
+pub(crate) fn difference(old: &Manifest, new: &Manifest) -> Option<String> {
     if old.case != new.case {
         return Some(format!("case {} there, {} here", old.case, new.case));
     }
@@ -123,7 +123,7 @@ pub fn difference(old: &Manifest, new: &Manifest) -> Option<String> {
 
 /// Creates the directory (or checks that it was made from this plan), copies the plan into it
 /// and writes the manifest and the case directories.
-pub fn prepare(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<(), Failure> {
+pub(crate) fn prepare(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<(), Failure> {
     let new = Manifest::of(plan, cases);
     if let Some(old) = read_manifest(layout)? {
         if let Some(why) = difference(&old, &new) {
@@ -148,12 +148,12 @@ pub fn prepare(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<(), F
 
 /// An exclusive lock on the directory, held while a local sweep runs (released on exit, even
 /// after SIGKILL).
-pub struct DirLock {
+pub(crate) struct DirLock {
     _file: File,
 }
 
 /// Takes the lock of `layout`'s directory, or says who holds it.
-pub fn lock(layout: &Layout) -> Result<DirLock, Failure> {
+pub(crate) fn lock(layout: &Layout) -> Result<DirLock, Failure> {
     let path = layout.dir.join(".lock");
     let file = std::fs::OpenOptions::new()
         .create(true)

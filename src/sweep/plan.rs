@@ -26,10 +26,10 @@ pub(crate) use plan_err;
 /// `[outputs]`: what each case writes besides its summary, CSV and log.
 #[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
-pub struct Outputs {
+pub(crate) struct Outputs {
     /// Also write each case's Rerun recording, `cases/<id>/run.rrd`.
     #[serde(default)]
-    pub recording: bool,
+    pub(crate) recording: bool,
 }
 
 /// `[diagram]` as written.
@@ -45,33 +45,33 @@ struct RawDiagram {
 
 /// The phase diagram: two swept options as axes, and the summary key of the second panel.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Diagram {
-    pub x: String,
-    pub y: Option<String>,
-    pub value: String,
-    pub x_scale: Scale,
-    pub y_scale: Scale,
+pub(crate) struct Diagram {
+    pub(crate) x: String,
+    pub(crate) y: Option<String>,
+    pub(crate) value: String,
+    pub(crate) x_scale: Scale,
+    pub(crate) y_scale: Scale,
 }
 
 /// `[slurm]`: resources of each array task (command-line flags override them).
 #[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
-pub struct SlurmPlan {
+pub(crate) struct SlurmPlan {
     /// Wall-time limit per case, as sbatch takes it (e.g. "01:00:00").
-    pub time: Option<String>,
+    pub(crate) time: Option<String>,
     /// Memory per case, as sbatch takes it (e.g. "2G").
-    pub memory: Option<String>,
+    pub(crate) memory: Option<String>,
     /// CPUs per case.
-    pub cpus: Option<u32>,
-    pub partition: Option<String>,
+    pub(crate) cpus: Option<u32>,
+    pub(crate) partition: Option<String>,
     /// At most this many array tasks at once (`--array=...%N`).
-    pub max_parallel: Option<u32>,
+    pub(crate) max_parallel: Option<u32>,
     /// Extra sbatch options, one per line, e.g. "--account=abc" (written as `#SBATCH --account=abc`).
     #[serde(default)]
-    pub sbatch: Vec<String>,
+    pub(crate) sbatch: Vec<String>,
     /// Shell lines run before each case, e.g. "module load gcc".
     #[serde(default)]
-    pub setup: Vec<String>,
+    pub(crate) setup: Vec<String>,
 }
 
 #[derive(Debug, Deserialize)]
@@ -96,46 +96,46 @@ struct RawPlan {
 
 /// One swept option and its values.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Axis {
-    pub name: String,
-    pub values: Vec<Value>,
-    pub scale: Scale,
+pub(crate) struct Axis {
+    pub(crate) name: String,
+    pub(crate) values: Vec<Value>,
+    pub(crate) scale: Scale,
 }
 
 /// A checked plan.
 #[derive(Clone, Debug)]
-pub struct Plan {
+pub(crate) struct Plan {
     /// Used in titles and job names: `name`, or the plan file's stem.
-    pub name: String,
-    pub case: CaseKind,
+    pub(crate) name: String,
+    pub(crate) case: CaseKind,
     /// The output directory as written (None: give --output).
-    pub output: Option<PathBuf>,
-    pub fixed: Vec<(String, Value)>,
+    pub(crate) output: Option<PathBuf>,
+    pub(crate) fixed: Vec<(String, Value)>,
     /// Full-grid options, outermost first.
-    pub grid: Vec<Axis>,
+    pub(crate) grid: Vec<Axis>,
     /// Zipped options (advanced together; innermost).
-    pub zip: Vec<Axis>,
-    pub outputs: Outputs,
-    pub diagram: Diagram,
-    pub slurm: SlurmPlan,
+    pub(crate) zip: Vec<Axis>,
+    pub(crate) outputs: Outputs,
+    pub(crate) diagram: Diagram,
+    pub(crate) slurm: SlurmPlan,
     /// The plan file's text, copied into the sweep directory.
-    pub text: String,
+    pub(crate) text: String,
 }
 
 /// One case of a sweep.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct CaseSpec {
-    pub index: usize,
+pub(crate) struct CaseSpec {
+    pub(crate) index: usize,
     /// Stable and readable, e.g. `0003-alpha=0.4-re=1000`.
-    pub id: String,
+    pub(crate) id: String,
     /// The swept options' values.
-    pub params: Vec<(String, Value)>,
+    pub(crate) params: Vec<(String, Value)>,
     /// The case's own options (`[case, --opt=value, ...]`), without the outputs the sweep adds.
-    pub args: Vec<String>,
+    pub(crate) args: Vec<String>,
 }
 
 /// Reads and checks a plan file.
-pub fn load(path: &Path, commands: &dyn CaseCommands) -> Result<Plan, PlanError> {
+pub(crate) fn load(path: &Path, commands: &dyn CaseCommands) -> Result<Plan, PlanError> {
     let shown = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|e| plan_err!("plan {shown}: {e}"))?;
     let stem = path
@@ -146,7 +146,11 @@ pub fn load(path: &Path, commands: &dyn CaseCommands) -> Result<Plan, PlanError>
 }
 
 /// Parses and checks a plan's text (`stem` names it when it has no `name`).
-pub fn parse(text: &str, stem: &str, commands: &dyn CaseCommands) -> Result<Plan, PlanError> {
+pub(crate) fn parse(
+    text: &str,
+    stem: &str,
+    commands: &dyn CaseCommands,
+) -> Result<Plan, PlanError> {
     let raw: RawPlan = toml::from_str(text).map_err(|e| toml_error(&e, text))?;
     let Some(case) = CaseKind::from_name(&raw.case) else {
         let names: Vec<&str> = CaseKind::ALL.iter().map(|k| k.name()).collect();
@@ -386,7 +390,7 @@ fn diagram(
 }
 
 /// Slurm strings end up in a shell script: refuse line breaks.
-pub fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
+pub(crate) fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
     let fields = [
         ("time", &s.time),
         ("memory", &s.memory),

@@ -39,7 +39,7 @@ fn register_font() {
 }
 
 /// Writes `phase.svg` and `phase.png` (each atomically).
-pub fn write_figures(layout: &Layout, data: &DiagramData) -> Result<(), Failure> {
+pub(crate) fn write_figures(layout: &Layout, data: &DiagramData) -> Result<(), Failure> {
     register_font();
     let fail = |e: DrawError| Failure::output(format!("drawing the phase diagram: {}", e.0));
     let mut svg = String::new();

@@ -22,7 +22,7 @@ pub(crate) enum ProgressMode {
 }
 
 /// The sweep's progress on stderr.
-pub struct Progress {
+pub(crate) struct Progress {
     bar: Option<ProgressBar>,
     lines: bool,
     total: usize,
@@ -33,7 +33,7 @@ pub struct Progress {
 
 impl Progress {
     /// `total` cases of which `done` are already done.
-    pub fn new(mode: ProgressMode, total: usize, done: usize) -> Progress {
+    pub(crate) fn new(mode: ProgressMode, total: usize, done: usize) -> Progress {
         let terminal = std::io::stderr().is_terminal();
         let (bar, lines) = match mode {
             ProgressMode::Off => (false, false),
@@ -76,7 +76,7 @@ impl Progress {
     }
 
     /// A line above the bar (or on its own).
-    pub fn note(&self, line: &str) {
+    pub(crate) fn note(&self, line: &str) {
         match &self.bar {
             Some(pb) => pb.println(line),
             None if self.lines => eprintln!("{line}"),
@@ -84,13 +84,13 @@ impl Progress {
         }
     }
 
-    pub fn started(&mut self) {
+    pub(crate) fn started(&mut self) {
         self.running += 1;
         self.message();
     }
 
     /// A case ended (`status` as recorded, `outcome` its sweep status).
-    pub fn finished(&mut self, id: &str, outcome: CaseState, status: &CaseStatus) {
+    pub(crate) fn finished(&mut self, id: &str, outcome: CaseState, status: &CaseStatus) {
         self.running = self.running.saturating_sub(1);
         self.done += 1;
         if outcome != CaseState::Completed {
@@ -116,7 +116,7 @@ impl Progress {
         self.message();
     }
 
-    pub fn finish(&self) {
+    pub(crate) fn finish(&self) {
         if let Some(pb) = &self.bar {
             pb.finish_and_clear();
         }

@@ -16,20 +16,20 @@ use platefall_post::phase::CaseState;
 
 /// One case in the merged table.
 #[derive(Clone, Debug)]
-pub struct Row {
-    pub case: CaseSpec,
+pub(crate) struct Row {
+    pub(crate) case: CaseSpec,
     /// How the case stands.
-    pub status: CaseState,
-    pub exit_code: Option<i32>,
-    pub message: String,
+    pub(crate) status: CaseState,
+    pub(crate) exit_code: Option<i32>,
+    pub(crate) message: String,
     /// The case's recording, if it has one.
-    pub recording: Option<PathBuf>,
+    pub(crate) recording: Option<PathBuf>,
     /// The case's summary (empty if it has none).
-    pub summary: Object,
+    pub(crate) summary: Object,
 }
 
 /// A case's sweep status from its summary and its `status.json`.
-pub fn outcome(layout: &Layout, id: &str, status: Option<&CaseStatus>) -> CaseState {
+pub(crate) fn outcome(layout: &Layout, id: &str, status: Option<&CaseStatus>) -> CaseState {
     let summary = summary_status(layout, id);
     match (summary, status) {
         (Some(StatusKind::Completed), _) => CaseState::Completed,
@@ -62,7 +62,7 @@ fn explain(state: CaseState, status: Option<&CaseStatus>) -> String {
 }
 
 /// The row of one case.
-pub fn row(layout: &Layout, case: &CaseSpec) -> Row {
+pub(crate) fn row(layout: &Layout, case: &CaseSpec) -> Row {
     let status = read_status(layout, &case.id);
     let state = outcome(layout, &case.id, status.as_ref());
     let summary = std::fs::read_to_string(layout.summary(&case.id))
@@ -81,7 +81,7 @@ pub fn row(layout: &Layout, case: &CaseSpec) -> Row {
 }
 
 /// Every case's row, in case order.
-pub fn gather(layout: &Layout, cases: &[CaseSpec]) -> Vec<Row> {
+pub(crate) fn gather(layout: &Layout, cases: &[CaseSpec]) -> Vec<Row> {
     cases.iter().map(|c| row(layout, c)).collect()
 }
 
@@ -164,7 +164,7 @@ fn csv_field(v: &Json) -> String {
 }
 
 /// Writes `results.csv` and `results.json` (each atomically).
-pub fn write_tables(layout: &Layout, rows: &[Row]) -> Result<(), Failure> {
+pub(crate) fn write_tables(layout: &Layout, rows: &[Row]) -> Result<(), Failure> {
     let keys = summary_keys(rows);
     let records: Vec<Object> = rows.iter().map(|r| record(layout, r, &keys)).collect();
     let header: Vec<String> = match records.first() {
@@ -185,7 +185,7 @@ pub fn write_tables(layout: &Layout, rows: &[Row]) -> Result<(), Failure> {
 }
 
 /// Counts of each status, in a fixed order, for the closing line.
-pub fn tally(rows: &[Row]) -> String {
+pub(crate) fn tally(rows: &[Row]) -> String {
     let parts: Vec<String> = CaseState::ALL
         .iter()
         .filter_map(|s| {
@@ -197,7 +197,7 @@ pub fn tally(rows: &[Row]) -> String {
 }
 
 /// One line per case that did not complete: its id, status, exit code and why.
-pub fn not_completed(rows: &[Row]) -> Vec<String> {
+pub(crate) fn not_completed(rows: &[Row]) -> Vec<String> {
     rows.iter()
         .filter(|r| r.status != CaseState::Completed)
         .map(|r| {

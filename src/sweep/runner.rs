@@ -18,7 +18,7 @@ use platefall_post::phase::CaseState;
 const POLL: Duration = Duration::from_millis(50);
 
 /// Installs the Ctrl-C (and SIGTERM) handler: the count of presses.
-pub fn interrupt_counter() -> Result<Arc<AtomicUsize>, Failure> {
+pub(crate) fn interrupt_counter() -> Result<Arc<AtomicUsize>, Failure> {
     let presses = Arc::new(AtomicUsize::new(0));
     let p = presses.clone();
     ctrlc::set_handler(move || {
@@ -29,7 +29,7 @@ pub fn interrupt_counter() -> Result<Arc<AtomicUsize>, Failure> {
 }
 
 /// Runs `todo` with at most `jobs` at once. Returns true if it was interrupted.
-pub fn run_pool(
+pub(crate) fn run_pool(
     exe: &Path,
     layout: &Layout,
     todo: &[CaseSpec],

@@ -42,7 +42,7 @@ fn resources(plan: &SlurmPlan, flags: &SlurmOverrides) -> SlurmPlan {
 }
 
 /// Indices as Slurm's `--array` takes them: runs of consecutive indices as `a-b`.
-pub fn array_spec(indices: &[usize]) -> String {
+pub(crate) fn array_spec(indices: &[usize]) -> String {
     let mut parts = Vec::new();
     let mut i = 0;
     while i < indices.len() {
@@ -90,7 +90,13 @@ fn job_name(name: &str) -> String {
 }
 
 /// The text of `sweep.sbatch`.
-pub fn script(layout: &Layout, plan: &Plan, todo: &[usize], res: &SlurmPlan, exe: &str) -> String {
+pub(crate) fn script(
+    layout: &Layout,
+    plan: &Plan,
+    todo: &[usize],
+    res: &SlurmPlan,
+    exe: &str,
+) -> String {
     let dir = layout.dir.to_string_lossy();
     let logs = layout.slurm_logs();
     let mut array = array_spec(todo);
@@ -148,7 +154,7 @@ pub fn script(layout: &Layout, plan: &Plan, todo: &[usize], res: &SlurmPlan, exe
 
 /// `--slurm`: prepares the directory, writes `DIR/sweep.sbatch` for the cases not yet done and
 /// prints how to submit it.
-pub fn submit_script(
+pub(crate) fn submit_script(
     layout: &Layout,
     plan: &Plan,
     cases: &[CaseSpec],

@@ -8,7 +8,7 @@ pub(crate) use platefall_post::phase::Scale;
 /// One value of an option, as written in the plan.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
-pub enum Value {
+pub(crate) enum Value {
     Bool(bool),
     Int(i64),
     Float(f64),
@@ -21,7 +21,7 @@ const RANGE_DIGITS: usize = 12;
 
 impl Value {
     /// The value as a command-line argument.
-    pub fn arg(&self) -> String {
+    pub(crate) fn arg(&self) -> String {
         match self {
             Value::Bool(b) => b.to_string(),
             Value::Int(i) => i.to_string(),
@@ -31,7 +31,7 @@ impl Value {
     }
 
     /// The value as a number, when it is one.
-    pub fn as_f64(&self) -> Option<f64> {
+    pub(crate) fn as_f64(&self) -> Option<f64> {
         match self {
             Value::Int(i) => Some(*i as f64),
             Value::Float(x) => Some(*x),
@@ -40,7 +40,7 @@ impl Value {
     }
 
     /// The value in a case id: the argument with anything but `[A-Za-z0-9.+_-]` replaced by `_`.
-    pub fn id_part(&self) -> String {
+    pub(crate) fn id_part(&self) -> String {
         self.arg()
             .chars()
             .map(|c| {
@@ -54,7 +54,7 @@ impl Value {
     }
 
     /// A plan value: a boolean, integer, float or string (`what` names it in errors).
-    pub fn from_toml(v: &toml::Value, what: &str) -> Result<Value, PlanError> {
+    pub(crate) fn from_toml(v: &toml::Value, what: &str) -> Result<Value, PlanError> {
         match v {
             toml::Value::Boolean(b) => Ok(Value::Bool(*b)),
             toml::Value::Integer(i) => Ok(Value::Int(*i)),
@@ -86,7 +86,7 @@ struct RangeSpec {
 }
 
 /// The values of a swept option: a list, or a range table. `what` names it in errors.
-pub fn expand(v: &toml::Value, what: &str) -> Result<(Vec<Value>, Scale), PlanError> {
+pub(crate) fn expand(v: &toml::Value, what: &str) -> Result<(Vec<Value>, Scale), PlanError> {
     match v {
         toml::Value::Array(items) => {
             if items.is_empty() {
@@ -168,6 +168,6 @@ fn describe(v: &toml::Value) -> String {
 }
 
 /// A possibly multi-line message on one line.
-pub fn one_line(s: &str) -> String {
+pub(crate) fn one_line(s: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")
 }

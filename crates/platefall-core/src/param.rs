@@ -19,29 +19,45 @@ pub enum Param {
     Growth,
     /// Number of stretched intervals of a patch.
     StretchIntervals,
+    /// Reynolds number U c/ν.
     Reynolds,
+    /// Courant number of the convective limit.
     Cfl,
+    /// End time.
     TEnd,
+    /// Time-step ceiling.
     DtMax,
     /// The seed's rotation rule C_c.
     Cc,
+    /// Net turns after release that end the run.
     Turns,
+    /// Angle of attack of a static plate.
     Alpha,
+    /// The static plate's start-up nudge.
     Kick,
     /// The forced rotation rate θ̇.
     ForcedOmega,
+    /// The forced rotation's spin-up time.
     Spinup,
+    /// Angle of attack held until release.
     Alpha0,
+    /// Time held before release.
     Develop,
+    /// Launch (or translation) speed.
     V0,
+    /// Launch flight-path angle.
     Gamma0,
+    /// Mass ratio m*.
     Mass,
+    /// Inertia ratio I*.
     Inertia,
+    /// Gravity g*.
     Gravity,
     /// Displaced fluid mass m_f* (buoyancy).
     DisplacedMass,
     /// Applied moment on the plate.
     Torque,
+    /// Adams–Bashforth order.
     AbOrder,
     /// Half-width of the near field along x (chords): beyond it the grid transport is implicit.
     NearX,
@@ -110,9 +126,21 @@ impl Param {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Accepted {
     /// lo ≤ x ≤ hi, or lo < x ≤ hi when `open_lo`.
-    Real { lo: f64, hi: f64, open_lo: bool },
+    Real {
+        /// The lower bound.
+        lo: f64,
+        /// The upper bound.
+        hi: f64,
+        /// Whether the lower bound itself is excluded.
+        open_lo: bool,
+    },
     /// A whole number in lo..=hi.
-    Whole { lo: usize, hi: usize },
+    Whole {
+        /// The smallest accepted.
+        lo: usize,
+        /// The largest accepted.
+        hi: usize,
+    },
 }
 
 impl fmt::Display for Accepted {
@@ -132,15 +160,21 @@ pub enum InputError {
     /// The value is outside the accepted range.
     #[error("{} {value} is out of range: accepted {accepted}", .param.describe())]
     OutOfRange {
+        /// The quantity.
         param: Param,
+        /// The value given.
         value: f64,
+        /// What is accepted.
         accepted: Accepted,
     },
     /// The value is in range on its own but not together with the others; `why` says which.
     #[error("{} = {value} is not accepted: {why}", .param.describe())]
     Inconsistent {
+        /// The quantity.
         param: Param,
+        /// The value given.
         value: f64,
+        /// Why it cannot work with the others, and what is accepted.
         why: String,
     },
     /// A coupled case without plate properties.
@@ -148,7 +182,12 @@ pub enum InputError {
     MissingPlate,
     /// A value the run needs and nothing gave; `why` says when it is needed.
     #[error("the {} is required {why}", .param.describe())]
-    Missing { param: Param, why: &'static str },
+    Missing {
+        /// The quantity.
+        param: Param,
+        /// When it is needed.
+        why: &'static str,
+    },
 }
 
 impl InputError {

@@ -333,8 +333,8 @@ fn rigid_rotation_stays_exact(scheme: FarFieldScheme) {
         let dt = s.prepare().unwrap().min(0.01);
         s.advance(dt, frame).unwrap();
     }
-    // Velocity stays the rigid rotation to round-off (the discrete balance is exact, see the
-    // derivation in the README's numerics section); 1e-10 leaves room for the Cholesky solve.
+    // Velocity stays the rigid rotation to round-off (the discrete balance is exact); 1e-10
+    // leaves room for the Cholesky solve.
     let err = rms_error(&s, |x, y| rigid(x, y, 0.0));
     assert!(
         err < 1e-10,

@@ -6,7 +6,7 @@
 //! motion; a plot scaled to it shows the developed cycle as a flat line. These ranges are chosen
 //! from the case's own parameters to hold the developed motion and to leave the spike outside
 //! (it stays in the data: zoom out to see it). They are estimates with a margin, checked against
-//! the runs of the README's tables:
+//! the runs of docs/verification.md's tables:
 //!
 //! - **static**, angle of attack α (folded to a ∈ \[0, π/2\]): the forces grow with the
 //!   normal-force coefficient until the wake sheds from both edges; the peaks reach
@@ -16,7 +16,7 @@
 //!   q = 1 + |R|/2 (measured peaks of C_L: 2.8, 4.4, 7.6 at R = 1, 2, 4 against 2.8 q);
 //!   range q·\[−0.9, 2.8\], its lift side mirrored for R < 0.
 //! - **pinned**: as forced at the autorotation rate θ̇ ≈ 2.3 (tip speed ratio ≈ 0.55, from the
-//!   README's pinned table); the sense of the autorotation is not known beforehand, so the range
+//!   pinned table of docs/verification.md); the sense of the autorotation is not known beforehand, so the range
 //!   is symmetric.
 //! - **free**: the mean aerodynamic force of a developed fall carries the weight, so its
 //!   coefficient on the reference speed is W = 2 m* g*; the cycle swings from about −0.6 W to
@@ -126,7 +126,7 @@ mod tests {
         r[0] <= lo && hi <= r[1]
     }
 
-    /// Developed extremes measured at N = 16–64 (README tables and runs made for this module)
+    /// Developed extremes measured at N = 16–64 (docs/verification.md's tables and runs made for this module)
     /// lie inside; the impulsive-start spikes (C_D 27 at α = 0.4, 169 at π/2; C_L 16.7 of a
     /// coupled start) lie outside.
     #[test]

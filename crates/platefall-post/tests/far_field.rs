@@ -1,4 +1,4 @@
-//! The implicit far field (SPEC §3; README "How it works → Flow"): a Lamb–Oseen vortex carried
+//! The implicit far field (SPEC §3; docs/how-it-works.md, "Far field"): a Lamb–Oseen vortex carried
 //! through the far field of a spinning grid against the exact viscous solution, and Δt control that
 //! no longer depends on the extent of the grid.
 use std::f64::consts::PI;

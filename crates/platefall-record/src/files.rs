@@ -2,37 +2,78 @@
 //! can be written ([`check_writable`]), and no two outputs are the same file ([`check_outputs`]).
 use std::path::{Path, PathBuf};
 
+/// Why a path cannot take an output (the message says it in one line).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum PathRefusal {
+    /// The directory could not be created (default paths only).
+    #[error("cannot create directory {}: {reason}", .dir.display())]
+    CannotCreateDirectory {
+        /// The directory.
+        dir: PathBuf,
+        /// The system's error.
+        reason: String,
+    },
+    /// The parent exists and is not a directory.
+    #[error("{} is not a directory", .0.display())]
+    NotADirectory(PathBuf),
+    /// The directory does not exist.
+    #[error("directory {} does not exist (create it first)", .0.display())]
+    NoDirectory(PathBuf),
+    /// The path names a directory.
+    #[error("is a directory")]
+    IsADirectory,
+    /// The path names something that is not a regular file (a FIFO, a device).
+    #[error("exists and is not a regular file")]
+    NotARegularFile,
+    /// No file can be created in the directory.
+    #[error("directory {} is not writable ({reason})", .dir.display())]
+    NotWritable {
+        /// The directory.
+        dir: PathBuf,
+        /// The system's error.
+        reason: String,
+    },
+    /// The file exists and cannot be replaced.
+    #[error("exists and cannot be overwritten ({0})")]
+    CannotOverwrite(String),
+    /// Another output of the run names the same file.
+    #[error("is the same file as {flag} {}; each output needs its own file", .path.display())]
+    SameFileAs {
+        /// The other output's option.
+        flag: &'static str,
+        /// The other output's path, as given.
+        path: PathBuf,
+    },
+}
+
 /// Why `path` cannot take an output: its directory does not exist or is not writable, or the path
 /// is a directory or an existing file that cannot be replaced. With `create_dir`, the parent
 /// directory is created first (for default paths such as `recordings/`).
-pub fn check_writable(path: &Path, create_dir: bool) -> Result<(), String> {
+pub fn check_writable(path: &Path, create_dir: bool) -> Result<(), PathRefusal> {
     let dir = directory_of(path);
     if create_dir {
-        std::fs::create_dir_all(&dir)
-            .map_err(|e| format!("cannot create directory {}: {e}", dir.display()))?;
+        std::fs::create_dir_all(&dir).map_err(|e| PathRefusal::CannotCreateDirectory {
+            dir: dir.clone(),
+            reason: e.to_string(),
+        })?;
     }
     match std::fs::metadata(&dir) {
         Ok(m) if m.is_dir() => {}
-        Ok(_) => return Err(format!("{} is not a directory", dir.display())),
-        Err(_) => {
-            return Err(format!(
-                "directory {} does not exist (create it first)",
-                dir.display()
-            ))
-        }
+        Ok(_) => return Err(PathRefusal::NotADirectory(dir)),
+        Err(_) => return Err(PathRefusal::NoDirectory(dir)),
     }
     if path.is_dir() {
-        return Err("is a directory".into());
+        return Err(PathRefusal::IsADirectory);
     }
     if path.exists() && !path.is_file() {
-        return Err("exists and is not a regular file".into());
+        return Err(PathRefusal::NotARegularFile);
     }
     probe_directory(&directory_of(&resolve_links(path)))?;
     if path.exists() {
         std::fs::OpenOptions::new()
             .append(true)
             .open(path)
-            .map_err(|e| format!("exists and cannot be overwritten ({e})"))?;
+            .map_err(|e| PathRefusal::CannotOverwrite(e.to_string()))?;
     }
     Ok(())
 }
@@ -46,7 +87,7 @@ fn directory_of(path: &Path) -> PathBuf {
 }
 
 /// Creates and removes a uniquely named file in `dir`.
-fn probe_directory(dir: &Path) -> Result<(), String> {
+fn probe_directory(dir: &Path) -> Result<(), PathRefusal> {
     let nanos = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map(|d| d.as_nanos())
@@ -59,7 +100,10 @@ fn probe_directory(dir: &Path) -> Result<(), String> {
         .write(true)
         .create_new(true)
         .open(&probe)
-        .map_err(|e| format!("directory {} is not writable ({e})", dir.display()))?;
+        .map_err(|e| PathRefusal::NotWritable {
+            dir: dir.to_path_buf(),
+            reason: e.to_string(),
+        })?;
     let _ = std::fs::remove_file(&probe);
     Ok(())
 }
@@ -88,17 +132,23 @@ pub fn resolve_links(path: &Path) -> PathBuf {
 /// created (default paths only).
 #[derive(Clone, Copy, Debug)]
 pub struct OutputPath<'a> {
+    /// The option that names it, e.g. "--csv".
     pub flag: &'static str,
+    /// The path as given.
     pub path: &'a Path,
+    /// Whether its directory may be created.
     pub create_dir: bool,
 }
 
 /// A refused output path: the option, the path as given, and why.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PathProblem {
+    /// The option that names it.
     pub flag: &'static str,
+    /// The path as given.
     pub path: PathBuf,
-    pub reason: String,
+    /// Why it is refused.
+    pub reason: PathRefusal,
 }
 
 /// Checks every output of a run: each must be writable ([`check_writable`]) and no two may be
@@ -106,7 +156,7 @@ pub struct PathProblem {
 pub fn check_outputs(outputs: &[OutputPath]) -> Result<(), PathProblem> {
     let mut seen: Vec<(&OutputPath, PathBuf)> = Vec::new();
     for out in outputs {
-        let problem = |reason: String| PathProblem {
+        let problem = |reason: PathRefusal| PathProblem {
             flag: out.flag,
             path: out.path.to_path_buf(),
             reason,
@@ -117,11 +167,10 @@ pub fn check_outputs(outputs: &[OutputPath]) -> Result<(), PathProblem> {
             .iter()
             .find(|(o, r)| *r == real || same_existing_file(o.path, out.path))
         {
-            return Err(problem(format!(
-                "is the same file as {} {}; each output needs its own file",
-                other.flag,
-                other.path.display()
-            )));
+            return Err(problem(PathRefusal::SameFileAs {
+                flag: other.flag,
+                path: other.path.to_path_buf(),
+            }));
         }
         seen.push((out, real));
     }
@@ -165,7 +214,10 @@ mod tests {
         let dotted = d.join("sub/../a.rrd");
         let e = check_outputs(&[out("--save", &a), out("--summary", &dotted)]).unwrap_err();
         assert_eq!(e.flag, "--summary");
-        assert!(e.reason.contains("same file as --save"), "{e:?}");
+        assert!(
+            e.reason.to_string().contains("same file as --save"),
+            "{e:?}"
+        );
         #[cfg(unix)]
         {
             let link = d.join("link.json");

@@ -4,8 +4,9 @@
 //! # Contract with the solver
 //!
 //! ```ignore
-//! let opts = cli_args.record.resolve(case, t_end, &[("--summary", p)])?; // checked first
-//! let mut logger = record::spawn_logger(opts, run_info)?;  // opens sinks, starts the thread
+//! let opts = cli_args.record.resolve(case, &[("--summary", p)])?; // checked first
+//! let info = RunInfo::new(&config, command_line, version);  // the view defaults, the end time
+//! let mut logger = platefall_record::spawn_logger(opts, info)?; // opens sinks, starts the thread
 //! loop {
 //!     /* advance one step */
 //!     logger.step(sample)?;                  // blocking send (never dropped); fails if an output failed
@@ -39,8 +40,9 @@
 //!
 //! # Outputs and failures
 //!
-//! Every output (recording, CSV, and the summary the command line writes) goes through
-//! [`output::PendingFile`]: temporary name, sync, rename when complete. The logger notices a
+//! Every output (recording, CSV, the summary the command line writes, a sweep's files and its
+//! `phase.rrd`) goes through [`output::PendingFile`]: temporary name, sync, rename when
+//! complete. The logger notices a
 //! failed write at once and a file removed from under it within a second
 //! ([`LoggerReport::errors`], [`Logger::output_failure`]); [`Logger::step`] then fails, so the
 //! solver stops instead of computing what cannot be kept.
@@ -111,10 +113,11 @@
 //! the data: the data stay in physical coordinates and the picture has Y up, gravity down (the
 //! wake view has the path along +x: for a free fall it is turned by the glide angle).
 //!
-//! The blueprint (`record/viewer/blueprint.rs`) opens the coefficient, motion and α plots on
-//! ranges chosen from the case (`post/plot_range.rs`: the developed motion inside, the
-//! impulsive-start spike outside) and the wake and close-up views on fixed bounds; these are
-//! view properties in the blueprint store (`view/<id>/ScalarAxis`, `view/<id>/VisualBounds2D`).
+//! The blueprint (`viewer/blueprint.rs`) opens the coefficient, motion and α plots on ranges
+//! chosen from the case (`platefall_post::ViewDefaults`, from `RunInfo::view`: the developed
+//! motion inside, the impulsive-start spike outside) and the wake and close-up views on fixed
+//! bounds; these are view properties in the blueprint store (`view/<id>/ScalarAxis`,
+//! `view/<id>/VisualBounds2D`).
 //!
 //! The "growing" curves (trajectory, strobe, α plots) are split into segments of
 //! max(2, t_end/40) c/U, one entity each, re-sent only while their segment grows, so the total
@@ -133,10 +136,10 @@
 //! - For a bug report (< 20 MB): `--field-every 0.5 --field-res 128` gives 17.7 MB for the default
 //!   free fall (57 snapshots; the 62.6k steps are 16 MB of it). Longer runs: also shorten
 //!   `--t-end` / `--turns`, since the per-step series dominate.
-pub mod csv;
+mod csv;
 pub mod files;
-pub mod inject;
-pub mod logger;
+mod inject;
+mod logger;
 pub mod messages;
 pub mod options;
 pub mod output;

@@ -1,4 +1,4 @@
-//! The logger thread and its handle ([`Logger`]); see `record/mod.rs` for the contract.
+//! The logger thread and its handle ([`Logger`]); see the crate docs (`lib.rs`) for the contract.
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
@@ -9,7 +9,7 @@ use anyhow::Context as _;
 use crossbeam_channel::{bounded, Receiver, RecvTimeoutError, Sender, TrySendError};
 
 use super::csv::CsvWriter;
-use super::messages::{ConnectReport, Message, RunInfo, RunOutcome};
+use super::messages::{ConnectReport, Message, RecordingError, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::output::{LinkCheck, OutputError};
 use super::progress::Progress;
@@ -412,8 +412,8 @@ impl LoggerThread {
             self.last_check = Instant::now();
             found = self.viewer.as_ref().and_then(Viewer::check_outputs);
             if let (Some(link), Some(w)) = (&self.csv_link, &self.csv) {
-                if let Err(reason) = link.verify() {
-                    found = Some(w.fail(reason));
+                if let Err(lost) = link.verify() {
+                    found = Some(w.fail(lost.to_string()));
                 }
             }
         }
@@ -427,15 +427,15 @@ impl LoggerThread {
         let skipped = self.shared.fields_skipped.load(Ordering::Relaxed);
         match self.viewer.as_mut().map(|v| v.field(f, skipped)) {
             Some(Ok(false)) => {}
-            Some(Err(e)) => self.errors.push(e),
+            Some(Err(e)) => self.errors.push(e.to_string()),
             Some(Ok(true)) | None => self.fields += 1,
         }
     }
 
     /// Keeps a recording error for the report.
-    fn note(&mut self, result: Option<Result<(), String>>) {
+    fn note(&mut self, result: Option<Result<(), RecordingError>>) {
         if let Some(Err(e)) = result {
-            self.errors.push(e);
+            self.errors.push(e.to_string());
         }
     }
 

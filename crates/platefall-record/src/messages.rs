@@ -74,6 +74,17 @@ pub enum Message {
     Finish(RunOutcome),
 }
 
+/// The Rerun recording stream failed: the scene stops recording (its outputs are reported), the
+/// run goes on.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("recording: {0}")]
+pub struct RecordingError(pub String);
+
+/// A viewer option Rerun does not accept (a memory limit, a proxy URL): Rerun's own reason.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct ViewerRefusal(pub String);
+
 /// What a --connect / --spawn stream did.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConnectReport {

@@ -1,12 +1,12 @@
 //! Validated recording options: everything the logger needs. The command line builds them
-//! (`cli::record_args`); Rust callers build them directly.
+//! (`src/cli/record_args.rs`); Rust callers build them directly.
 use std::net::{IpAddr, SocketAddr};
 use std::path::PathBuf;
 
 use super::view_options::ViewOptions;
 use platefall_post::{FieldWindow, StreamFrame};
 
-/// Default convective time between field snapshots (see the size budget in `record/mod.rs`).
+/// Default convective time between field snapshots (see the size budget in the crate docs (`lib.rs`)).
 pub const DEFAULT_FIELD_EVERY: f64 = 0.1;
 /// Default image size: pixels along the longer side of the field window.
 pub const DEFAULT_FIELD_RES: usize = 256;
@@ -60,7 +60,7 @@ pub struct RecordOptions {
     pub save: Option<PathBuf>,
     /// Host a gRPC server.
     pub serve: Option<ServeOptions>,
-    /// Push to an already-running viewer at this URL (never stalls the run; see `record/mod.rs`).
+    /// Push to an already-running viewer at this URL (never stalls the run; see the crate docs (`lib.rs`)).
     pub connect: Option<String>,
     /// Start a local viewer (`rerun` on PATH) and stream to it.
     pub spawn: bool,

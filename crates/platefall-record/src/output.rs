@@ -46,6 +46,22 @@ pub fn partial_path(final_path: &Path) -> PathBuf {
     final_path.with_file_name(format!(".{name}.partial-{}", std::process::id()))
 }
 
+/// The temporary file of an output is no longer where it was written.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum LinkLost {
+    /// It is gone (deleted, or its directory removed or renamed).
+    #[error("the file being written ({}) disappeared ({reason}); was its directory removed?", .path.display())]
+    Disappeared {
+        /// The temporary file.
+        path: PathBuf,
+        /// The system's error.
+        reason: String,
+    },
+    /// Another file is at its path.
+    #[error("the file being written ({}) was replaced by another", .0.display())]
+    Replaced(PathBuf),
+}
+
 /// Identifies the temporary file on disk, to notice when it is removed (or its directory is)
 /// while it is being written; see [`LinkCheck::verify`].
 #[derive(Clone, Debug)]
@@ -74,21 +90,16 @@ impl LinkCheck {
 
     /// Fails if the temporary file is no longer at its path (deleted, or its directory removed
     /// or renamed): the output could never be renamed into place.
-    pub fn verify(&self) -> Result<(), String> {
-        let m = std::fs::metadata(&self.path).map_err(|e| {
-            format!(
-                "the file being written ({}) disappeared ({e}); was its directory removed?",
-                self.path.display()
-            )
+    pub fn verify(&self) -> Result<(), LinkLost> {
+        let m = std::fs::metadata(&self.path).map_err(|e| LinkLost::Disappeared {
+            path: self.path.clone(),
+            reason: e.to_string(),
         })?;
         #[cfg(unix)]
         {
             use std::os::unix::fs::MetadataExt as _;
             if (m.dev(), m.ino()) != self.id {
-                return Err(format!(
-                    "the file being written ({}) was replaced by another",
-                    self.path.display()
-                ));
+                return Err(LinkLost::Replaced(self.path.clone()));
             }
         }
         #[cfg(not(unix))]
@@ -195,7 +206,7 @@ impl PendingFile {
                 self.written
             ));
         }
-        self.link.verify()
+        self.link.verify().map_err(|e| e.to_string())
     }
 }
 

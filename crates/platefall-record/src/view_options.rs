@@ -7,7 +7,7 @@ use platefall_post::FieldWindow;
 /// Default wake image size: pixels along the wake window's longer side.
 pub const DEFAULT_WAKE_RES: usize = 256;
 
-/// Options of the wake pictures (see `record/mod.rs` for the entities).
+/// Options of the wake pictures (see the crate docs (`lib.rs`) for the entities).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ViewOptions {
     /// The wake window in the path frame (chords: x along the direction of travel, the plate at

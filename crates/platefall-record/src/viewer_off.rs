@@ -1,9 +1,9 @@
 //! Stand-in for the Rerun side of a recording when platefall is built without the `viewer`
 //! feature: nothing can be opened, so every sink option is refused before a run starts
-//! (`cli::record_args`), and the logger records CSV and progress only.
+//! (`src/cli/record_args.rs`), and the logger records CSV and progress only.
 use std::path::{Path, PathBuf};
 
-use super::messages::{ConnectReport, RunInfo, RunOutcome};
+use super::messages::{ConnectReport, RecordingError, RunInfo, RunOutcome, ViewerRefusal};
 use super::options::RecordOptions;
 use super::output::OutputError;
 use platefall_core::sim::{FieldSnapshot, StepSample};
@@ -36,13 +36,13 @@ impl Viewer {
     pub fn open(_opts: &RecordOptions, _info: &RunInfo) -> anyhow::Result<Viewer> {
         anyhow::bail!("this platefall was built without the `viewer` feature")
     }
-    pub fn step(&mut self, _s: StepSample) -> Result<(), String> {
+    pub fn step(&mut self, _s: StepSample) -> Result<(), RecordingError> {
         match *self {}
     }
-    pub fn field(&mut self, _f: &FieldSnapshot, _skipped: u64) -> Result<bool, String> {
+    pub fn field(&mut self, _f: &FieldSnapshot, _skipped: u64) -> Result<bool, RecordingError> {
         match *self {}
     }
-    pub fn idle(&mut self) -> Result<(), String> {
+    pub fn idle(&mut self) -> Result<(), RecordingError> {
         match *self {}
     }
     pub fn connect_report(&self) -> Option<ConnectReport> {
@@ -59,12 +59,12 @@ impl Viewer {
     }
 }
 
-pub fn check_memory_limit(_limit: &str) -> Result<(), String> {
-    Err("this build has no viewer".into())
+pub fn check_memory_limit(_limit: &str) -> Result<(), ViewerRefusal> {
+    Err(ViewerRefusal("this build has no viewer".into()))
 }
 
-pub fn check_proxy_url(_url: &str) -> Result<(), String> {
-    Err("this build has no viewer".into())
+pub fn check_proxy_url(_url: &str) -> Result<(), ViewerRefusal> {
+    Err(ViewerRefusal("this build has no viewer".into()))
 }
 
 /// A sweep's phase diagram as a recording: nothing is written in this build (`None`).

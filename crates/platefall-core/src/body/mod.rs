@@ -2,13 +2,13 @@
 //! variable-step Adams–Bashforth integrator, the strong (added-mass implicit) coupling and the
 //! advisory for explicit coupling.
 
-pub mod adams;
-pub mod coupling;
-pub mod rigid;
-pub mod strong;
+mod adams;
+mod coupling;
+mod rigid;
+mod strong;
 
 pub use adams::{ab_weights, AbError, AbStart, AdamsBashforth, MAX_ORDER};
-pub use coupling::{coupling_advice, PLATE_ADDED_INERTIA, PLATE_ADDED_MASS};
+pub use coupling::{coupling_advice, ADVICE_MARGIN, PLATE_ADDED_INERTIA, PLATE_ADDED_MASS};
 pub use rigid::{
     advance, body_to_inertial, inertial_to_body, state_derivative, wrap_angle, BodyState, Dof,
     InertialLoads, PlateProps, RigidBody,

@@ -1,20 +1,20 @@
 //! The run description above the physics: where a run's numbers come from (SPEC §2, §8) and the
 //! constructors that describe each case. [`RunBuilder`] fills in a
-//! [`RunConfig`](crate::sim::RunConfig) for each case with the command line's defaults and
+//! [`crate::sim::RunConfig`] for each case with the command line's defaults and
 //! validates it; this layer also holds the seed's card ([`PhysicalPlate`]), plates described
 //! physically ([`Strip`]) in named fluids ([`Fluid`]), the plate of a coupled run ([`Plate`]),
 //! and the conversion of results back to physical units ([`Units`]).
-pub mod build;
-pub mod fluid;
-pub mod plate;
-pub mod preset;
-pub mod strip;
-pub mod units;
+mod build;
+mod fluid;
+mod plate;
+mod preset;
+mod strip;
+mod units;
 
 pub use build::{defaults, ForcedRotation, FreeFall, PinnedPlate, RunBuilder, StaticPlate};
 pub use fluid::{Fluid, FLUID_NAMES};
 pub use plate::Plate;
-pub use preset::{NonDimensional, PhysicalPlate};
+pub use preset::{NonDimensional, PhysicalPlate, FOOT_M};
 pub use strip::Strip;
 pub use units::Units;
 

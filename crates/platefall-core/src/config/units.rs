@@ -5,6 +5,7 @@ use crate::sim::{ReferenceScales, RunConfig};
 /// Conversions from the run's units (c, U, c/U) to SI-based report units.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Units {
+    /// The chord and velocity scale.
     pub scales: ReferenceScales,
 }
 

@@ -6,17 +6,19 @@
 /// Ghost layers on each side (the upwind-biased convection stencil reaches two points).
 pub const GHOST: usize = 2;
 
+/// A field on the MAC grid with its ghost layers (a velocity component, a right-hand side).
 #[derive(Clone, Debug)]
 pub struct Padded {
     /// Interior sizes.
-    pub ni: usize,
-    pub nj: usize,
+    pub(crate) ni: usize,
+    pub(crate) nj: usize,
     /// Row length including ghosts.
-    pub stride: usize,
-    pub data: Vec<f64>,
+    pub(crate) stride: usize,
+    pub(crate) data: Vec<f64>,
 }
 
 impl Padded {
+    /// A field of `ni` × `nj` interior values, all zero.
     pub fn zeros(ni: usize, nj: usize) -> Self {
         let stride = ni + 2 * GHOST;
         Padded {
@@ -35,11 +37,13 @@ impl Padded {
         (j + GHOST as isize) as usize * self.stride + (i + GHOST as isize) as usize
     }
 
+    /// The value at (i, j) (ghosts included: i, j from −GHOST).
     #[inline(always)]
     pub fn get(&self, i: isize, j: isize) -> f64 {
         self.data[self.at(i, j)]
     }
 
+    /// Sets the value at (i, j).
     #[inline(always)]
     pub fn set(&mut self, i: isize, j: isize, value: f64) {
         let k = self.at(i, j);

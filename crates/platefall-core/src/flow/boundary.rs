@@ -16,8 +16,11 @@ use super::metrics::{Component, Metrics};
 /// A velocity field (x, y, t) ↦ (u, v) in body axes.
 pub type VelocityFn = Box<dyn Fn(f64, f64, f64) -> (f64, f64) + Send + Sync>;
 
+/// The outer boundary condition.
 pub enum OuterBc {
+    /// Fluid at rest where it enters relative to the grid, convective outflow where it leaves.
     FarField,
+    /// An exact velocity field on and beyond the boundary (verification).
     Prescribed(VelocityFn),
 }
 

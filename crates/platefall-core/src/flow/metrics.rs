@@ -15,15 +15,18 @@ pub struct Axis {
 }
 
 impl Axis {
+    /// The axis of these interior nodes, extended by the ghost layers.
     pub fn new(nodes: &[f64]) -> Self {
         let nodes = extend_nodes(nodes);
         let centres = nodes.windows(2).map(|w| 0.5 * (w[0] + w[1])).collect();
         Axis { nodes, centres }
     }
+    /// Node k (from −GHOST).
     #[inline(always)]
     pub fn node(&self, k: isize) -> f64 {
         self.nodes[(k + GHOST as isize) as usize]
     }
+    /// The centre of cell k (from −GHOST).
     #[inline(always)]
     pub fn centre(&self, k: isize) -> f64 {
         self.centres[(k + GHOST as isize) as usize]
@@ -54,26 +57,28 @@ pub struct Stencil1 {
 /// Metrics for the momentum stencils.
 #[derive(Clone, Debug)]
 pub struct Metrics {
+    /// The x axis.
     pub x: Axis,
+    /// The y axis.
     pub y: Axis,
     /// u-faces along x (index i = face index 0..=nx): CV = [x_c[i−1], x_c[i]], neighbours at xₙ[i±1].
-    pub u_x: Stencil1,
+    pub(crate) u_x: Stencil1,
     /// u-faces along y (index j = row 0..ny): CV = [yₙ[j], yₙ[j+1]], neighbours at y_c[j±1].
-    pub u_y: Stencil1,
+    pub(crate) u_y: Stencil1,
     /// v-faces along x (index i = column 0..nx).
-    pub v_x: Stencil1,
+    pub(crate) v_x: Stencil1,
     /// v-faces along y (index j = face index 0..=ny).
-    pub v_y: Stencil1,
+    pub(crate) v_y: Stencil1,
     /// Flux weight of the left cell when v is averaged to the u-face at xₙ[i]: dx[i−1]/(dx[i−1]+dx[i]).
-    pub wx_left: Vec<f64>,
+    pub(crate) wx_left: Vec<f64>,
     /// Flux weight of the lower cell when u is averaged to the v-face at yₙ[j]: dy[j−1]/(dy[j−1]+dy[j]).
-    pub wy_low: Vec<f64>,
+    pub(crate) wy_low: Vec<f64>,
     /// Spacing ratios of the u points along x (nodes) and y (centres), v along x (centres) and
     /// y (nodes), for the upwind-biased face values of the implicit zones.
-    pub u_xr: Ratios,
-    pub u_yr: Ratios,
-    pub v_xr: Ratios,
-    pub v_yr: Ratios,
+    pub(crate) u_xr: Ratios,
+    pub(crate) u_yr: Ratios,
+    pub(crate) v_xr: Ratios,
+    pub(crate) v_yr: Ratios,
 }
 
 /// Spacing ratios along a line of points p_k (ghosts included), for the face k between p_k and
@@ -134,6 +139,7 @@ impl Ratios {
 }
 
 impl Metrics {
+    /// The metrics of a grid.
     pub fn new(grid: &Grid) -> Self {
         let x = Axis::new(&grid.xn);
         let y = Axis::new(&grid.yn);

@@ -16,7 +16,7 @@
 //! measured faster than supernodal for the one right-hand side solved each step); only its two
 //! triangular solves are done here. The result does not depend on the number of threads: every
 //! sum is taken in the same order. Both cores stream half the factor each, so the solve takes
-//! about half the time where memory bandwidth allows (README, "Performance").
+//! about half the time where memory bandwidth allows (docs/performance.md).
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
 use faer::perm::PermRef;

@@ -60,13 +60,6 @@ impl Zones {
         }
     }
 
-    /// Whether any line is split.
-    pub fn any(&self) -> bool {
-        [&self.u_row, &self.v_row, &self.u_col, &self.v_col]
-            .iter()
-            .any(|f| f.iter().any(|&s| s))
-    }
-
     /// The columns `cols` cut into at most three segments: split, near, split.
     pub fn segments(near: &Range<isize>, cols: Range<isize>) -> [Segment; 3] {
         let a = near.start.clamp(cols.start, cols.end);

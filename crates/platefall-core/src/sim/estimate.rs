@@ -1,16 +1,16 @@
 //! What a run will cost, estimated from its description alone before anything large is
 //! allocated: cells, the pressure factor's size, memory, and a floor under the number of steps.
 //! The grid's coordinates are cheap to build (O(nx + ny)); the flow solver and its Cholesky
-//! factor are not, so the command line checks this estimate first (`cli/limits.rs`).
+//! factor are not, so the command line checks this estimate first (`src/cli/limits.rs`).
 //!
-//! The constants were measured on this code (README "Resource limits" lists the runs and the
+//! The constants were measured on this code (docs/performance.md, "Memory", lists the runs and the
 //! errors of the fits):
 //! - factor nonzeros per cell ≈ 12.38 ln(min(nx, ny)) − 36.9 (faer's simplicial Cholesky with
 //!   an AMD ordering; least-squares over 15 grids of 4 452 to 3.67 M cells, within ±11 % above
 //!   10⁴ cells; the split order of `flow/split_cholesky.rs` adds 2–4 %);
 //! - peak resident memory ≈ 8 MB + 180 B per cell + 12 B per factor nonzero (an f64 value and a
 //!   u32 row index), plus 16 MB and 24 B per cell per queued field snapshot with a Rerun sink;
-//! - a step costs ≈ 120 ns per cell (`platefall bench`, README "Performance").
+//! - a step costs ≈ 120 ns per cell (`platefall bench`, docs/performance.md).
 use super::spec::ValidatedConfig;
 use crate::flow::FlowParams;
 use crate::grid::Grid;
@@ -42,13 +42,17 @@ pub enum DtFloor {
 /// The cost of a run, estimated from its description.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Estimate {
+    /// Cells along x.
     pub nx: usize,
+    /// Cells along y.
     pub ny: usize,
+    /// nx × ny.
     pub cells: u64,
     /// Nonzeros of the pressure Cholesky factor (estimated).
     pub factor_nonzeros: f64,
     /// The largest Δt any step may take: min(ceiling, viscous limit).
     pub dt_floor: f64,
+    /// Which limit the floor is.
     pub dt_floor_from: DtFloor,
     /// At least this many steps reach t_end (the convective limit and the rotation rule only
     /// add steps).

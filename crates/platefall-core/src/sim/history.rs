@@ -25,17 +25,29 @@ pub const DEFAULT_CAPACITY: usize = 1 << 15;
 /// The scalars of a [`StepSample`] whose exact means and extremes the history keeps.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Quantity {
+    /// C_L.
     Cl,
+    /// C_D.
     Cd,
+    /// C_M.
     Cm,
+    /// X.
     X,
+    /// Y.
     Y,
+    /// θ.
     Theta,
+    /// Ẋ.
     Xdot,
+    /// Ẏ.
     Ydot,
+    /// θ̇.
     Omega,
+    /// V.
     Speed,
+    /// γ.
     Gamma,
+    /// α.
     Alpha,
 }
 

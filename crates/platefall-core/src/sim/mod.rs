@@ -23,21 +23,22 @@
 mod checks;
 mod error;
 pub mod estimate;
-pub mod history;
+mod history;
 mod motion;
 mod output;
 mod sample;
 mod spec;
-pub mod timestep;
+mod timestep;
 
 pub use error::SimError;
-pub use history::{History, Quantity};
+pub use history::{History, Quantity, DEFAULT_CAPACITY};
 pub use motion::{Case, CaseKind};
 pub use output::{FieldSnapshot, RunRecord, RunStatus, StatusKind};
 pub use sample::StepSample;
 pub use spec::{BodyConfig, PlateSource, ReferenceScales, RunConfig, TimeControl, ValidatedConfig};
+pub use timestep::{choose_dt, MAX_GROWTH};
 
-use crate::body::{wrap_angle, BodyState, Coupling, Dof, InertialLoads, RigidBody, StrongCoupling};
+use crate::body::{BodyState, Coupling, Dof, InertialLoads, RigidBody, StrongCoupling};
 use crate::flow::{AddedMass, FlowSolver, OuterBc};
 use crate::param::{InputError, Param};
 
@@ -164,26 +165,8 @@ impl Simulation {
 
     /// The sample describing the current state.
     pub fn sample(&self) -> StepSample {
-        let (cl, cd, cm) = self.flow.coefficients();
-        let s = &self.state;
-        let gamma = s.flight_path_angle();
-        StepSample {
-            step: self.flow.steps,
-            t: self.flow.t,
-            dt: self.flow.dt_prev,
-            cl,
-            cd,
-            cm,
-            x: s.x,
-            y: s.y,
-            theta: s.theta,
-            xdot: s.xdot,
-            ydot: s.ydot,
-            omega: s.omega,
-            speed: s.speed(),
-            gamma,
-            alpha: wrap_angle(s.theta - gamma),
-        }
+        let f = &self.flow;
+        StepSample::new(f.steps, f.t, f.dt_prev, f.coefficients(), &self.state)
     }
 
     /// A snapshot of the flow fields.

@@ -14,23 +14,40 @@ pub enum Case {
     /// During the first convective time the pitch is nudged by `kick`·sin²(πt) (smooth, zero at
     /// both ends) so that a symmetric configuration (α = π/2) does not rely on round-off to break
     /// its symmetry; afterwards α is exact.
-    Static { alpha: f64, kick: f64 },
+    Static {
+        /// The angle of attack (rad).
+        alpha: f64,
+        /// The start-up pitch nudge ε (rad).
+        kick: f64,
+    },
     /// B: translates at U; θ spun up from 0 at constant angular acceleration over `spinup` convective
     /// times to the rate θ̇ = `omega`, then held.
-    Forced { omega: f64, spinup: f64 },
+    Forced {
+        /// The final rotation rate θ̇.
+        omega: f64,
+        /// The spin-up time.
+        spinup: f64,
+    },
     /// C: translates at `speed` (U = 1, the wind tunnel; 0: a pin in still fluid), free to rotate
     /// about its centre; held at α₀ for `develop`, then released.
     Pinned {
+        /// The angle of attack held until release (rad).
         alpha0: f64,
+        /// The time held before release.
         develop: f64,
+        /// The translation speed.
         #[serde(default = "unit_speed")]
         speed: f64,
     },
     /// D: moves at V₀ along γ₀ at α₀ for `develop`, then falls freely (3 DOF, gravity).
     Free {
+        /// The launch speed V₀.
         v0: f64,
+        /// The launch flight-path angle γ₀ (rad).
         gamma0: f64,
+        /// The launch angle of attack α₀ (rad); θ = γ₀ + α₀ until release.
         alpha0: f64,
+        /// The time held before release.
         develop: f64,
     },
 }

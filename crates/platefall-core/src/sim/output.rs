@@ -9,17 +9,21 @@ use crate::flow::Frame;
 /// Velocities are the **inertial** velocity components along the body axes (SPEC §3).
 #[derive(Clone, Debug)]
 pub struct FieldSnapshot {
+    /// Steps taken so far.
     pub step: u64,
+    /// Convective time of the snapshot.
     pub t: f64,
-    /// Plate pose at this instant: centre (X, Y) and θ.
+    /// X of the plate's centre at this instant.
     pub x: f64,
+    /// Y of the centre.
     pub y: f64,
+    /// Pitch angle θ.
     pub theta: f64,
     /// The plate's motion in body axes: the grid-point velocity is g = (u0 − θ̇ y, v0 + θ̇ x).
     pub frame: Frame,
-    /// x-velocity on vertical faces (xn[i], yc[j]); length (nx + 1) * ny, index i + (nx + 1) * j.
+    /// x-velocity on vertical faces (xn\[i\], yc\[j\]); length (nx + 1) * ny, index i + (nx + 1) * j.
     pub u: Vec<f64>,
-    /// y-velocity on horizontal faces (xc[i], yn[j]); length nx * (ny + 1), index i + nx * j.
+    /// y-velocity on horizontal faces (xc\[i\], yn\[j\]); length nx * (ny + 1), index i + nx * j.
     pub v: Vec<f64>,
     /// Pressure at cell centres; length nx * ny, index i + nx * j. Zero far away.
     pub p: Vec<f64>,
@@ -90,6 +94,7 @@ impl RunStatus {
 
 /// How a run ended, with its time series.
 pub struct RunRecord {
+    /// How the run ended.
     pub status: RunStatus,
     /// The per-step history, bounded in memory: it dereferences to the retained samples
     /// (`&[StepSample]`, every step until it is full, then evenly thinned) and keeps exact
@@ -97,5 +102,6 @@ pub struct RunRecord {
     pub samples: History,
     /// Time of release (coupled cases) or of the end of spin-up (forced); 0 for static.
     pub t_release: f64,
+    /// Cells of the grid.
     pub cells: usize,
 }

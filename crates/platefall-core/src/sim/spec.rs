@@ -83,9 +83,11 @@ pub struct BodyConfig {
     /// The physical chord and velocity scale, when the plate has them.
     #[serde(default)]
     pub scales: Option<ReferenceScales>,
+    /// m*, I*, g*, m_f* and the applied moment.
     pub props: PlateProps,
-    /// Adams–Bashforth order (1..=6) and start procedure (SPEC §6).
+    /// Adams–Bashforth order (1..=6) of the plate's equations (SPEC §6).
     pub ab_order: usize,
+    /// How the Adams–Bashforth history is started at release.
     pub ab_start: AbStart,
     /// How the flow's loads enter the body's equations (SPEC §6; default strong).
     #[serde(default)]
@@ -122,11 +124,13 @@ impl Default for TimeControl {
 pub struct RunConfig {
     /// The motion law (SPEC §1).
     pub case: Case,
+    /// The body-fixed grid and the plate's thickness on it (SPEC §4).
     pub grid: GridSpec,
     /// The fluid (Re) and the flow solver's numerical parameters.
     pub flow: FlowParams,
     /// The plate's properties (coupled cases only).
     pub body: Option<BodyConfig>,
+    /// When the run ends and how its time step is bounded.
     pub time: TimeControl,
 }
 

@@ -1,12 +1,12 @@
 //! The recording's layout: entity paths, timelines, colour scales, series styles and cadences
-//! (documented in `record/mod.rs`).
+//! (documented in the crate docs (`lib.rs`)).
 use std::time::Duration;
 
 use rerun::components::Colormap;
 
 use platefall_core::sim::StepSample;
 
-/// Entity paths (stable; see `record/mod.rs`).
+/// Entity paths (stable; see the crate docs (`lib.rs`)).
 pub mod paths {
     /// Inertial frame, physical coordinates (Y up, gravity −Y).
     pub const WORLD: &str = "/world";

@@ -1,5 +1,5 @@
 //! The Rerun side of a recording (cargo feature `viewer`, on by default): the sinks (file,
-//! `--serve`, `--connect`, `--spawn`), the scene (entities, documented in `record/mod.rs`) and the
+//! `--serve`, `--connect`, `--spawn`), the scene (entities, documented in the crate docs (`lib.rs`)) and the
 //! default blueprint (sent by the scene when it starts). The logger thread drives a [`Viewer`]
 //! and knows nothing of Rerun. Also a sweep's phase diagram as a recording
 //! ([`write_phase_recording`]).
@@ -26,7 +26,7 @@ use std::time::Duration;
 use anyhow::Context as _;
 use rerun::RecordingStream;
 
-use super::messages::{ConnectReport, RunInfo, RunOutcome};
+use super::messages::{ConnectReport, RecordingError, RunInfo, RunOutcome, ViewerRefusal};
 use super::options::RecordOptions;
 use super::output::OutputError;
 pub use layout::paths;
@@ -105,27 +105,28 @@ impl Viewer {
     fn with_scene<T: Default>(
         &mut self,
         f: impl FnOnce(&mut Scene) -> rerun::RecordingStreamResult<T>,
-    ) -> Result<T, String> {
+    ) -> Result<T, RecordingError> {
         let Some(scene) = &mut self.scene else {
             return Ok(T::default());
         };
         f(scene).map_err(|e| {
             self.scene = None;
-            format!("recording: {e}")
+            RecordingError(e.to_string())
         })
     }
 
-    pub fn step(&mut self, s: StepSample) -> Result<(), String> {
+    /// Logs one step.
+    pub fn step(&mut self, s: StepSample) -> Result<(), RecordingError> {
         self.with_scene(|sc| sc.step(s))
     }
 
     /// Paints and logs a snapshot; false if it did not fit the grid (reported in the recording).
-    pub fn field(&mut self, f: &FieldSnapshot, skipped: u64) -> Result<bool, String> {
+    pub fn field(&mut self, f: &FieldSnapshot, skipped: u64) -> Result<bool, RecordingError> {
         self.with_scene(|sc| sc.field(f, skipped))
     }
 
     /// Called when the logger is idle: sends steps that have waited long enough.
-    pub fn idle(&mut self) -> Result<(), String> {
+    pub fn idle(&mut self) -> Result<(), RecordingError> {
         self.with_scene(|sc| sc.flush_if_stale())
     }
 
@@ -158,7 +159,7 @@ impl Viewer {
         errors: &mut Vec<String>,
     ) -> ViewerReport {
         if let Err(e) = self.with_scene(|sc| sc.finish(outcome, stats_md)) {
-            errors.push(e);
+            errors.push(e.to_string());
         }
         self.scene = None;
         let rrd = match self.rrd.take() {
@@ -228,13 +229,15 @@ fn connect_note(c: &ConnectReport, file_complete: bool) -> Option<String> {
 }
 
 /// Is `limit` a memory limit Rerun's server accepts ("25%", "2GB", "unlimited")?
-pub fn check_memory_limit(limit: &str) -> Result<(), String> {
-    rerun::MemoryLimit::parse(limit).map(|_| ())
+pub fn check_memory_limit(limit: &str) -> Result<(), ViewerRefusal> {
+    rerun::MemoryLimit::parse(limit)
+        .map(|_| ())
+        .map_err(ViewerRefusal)
 }
 
 /// Is `url` a Rerun proxy URL (`rerun+http://host:port/proxy`)?
-pub fn check_proxy_url(url: &str) -> Result<(), String> {
+pub fn check_proxy_url(url: &str) -> Result<(), ViewerRefusal> {
     rerun::external::re_uri::ProxyUri::from_str(url)
         .map(|_| ())
-        .map_err(|e| e.to_string())
+        .map_err(|e| ViewerRefusal(e.to_string()))
 }

@@ -79,9 +79,9 @@ impl RrdFile {
 
     /// Checks that the file being written is still on disk (not removed with its directory).
     pub fn check(&self) -> Option<OutputError> {
-        if let Err(reason) = self.link.verify() {
+        if let Err(lost) = self.link.verify() {
             let mut st = self.lock();
-            self.record_failure(&mut st, reason);
+            self.record_failure(&mut st, lost.to_string());
         }
         self.error()
     }

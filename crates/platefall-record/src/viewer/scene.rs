@@ -1,5 +1,5 @@
 //! The dynamic part of a recording: per-step series and poses, growing curves, field images and
-//! streamlines, and the end-of-run status (the layout is documented in `record/mod.rs`).
+//! streamlines, and the end-of-run status (the layout is documented in the crate docs (`lib.rs`)).
 //!
 //! Lives on the logger thread, which alone owns the `RecordingStream`; every `set_time` here is
 //! therefore the logger thread's own time.
