@@ -426,6 +426,26 @@ fn bad_plans_are_refused_with_exit_2_before_anything_runs() {
 }
 
 #[test]
+fn an_output_directory_that_cannot_be_made_is_bad_input_as_for_a_run() {
+    // Before anything runs, a path that cannot be used is bad input: exit 2, one line, for a
+    // local sweep and for --slurm alike (a run's `--save` into a missing directory exits 2 too).
+    let dir = scratch("nodir");
+    let p = plan(&dir, FOUR_STATIC);
+    let blocker = dir.join("a-file");
+    std::fs::write(&blocker, "not a directory").unwrap();
+    let target = blocker.join("out");
+    for extra in [&[][..], &["--slurm"][..]] {
+        let mut args = vec![p.to_str().unwrap(), "--output", target.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        let out = sweep(&args);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{extra:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{extra:?}: not one line: {err}");
+        assert!(err.starts_with("error: cannot create "), "{extra:?}: {err}");
+    }
+}
+
+#[test]
 fn collect_merges_a_partial_directory_and_lists_what_is_missing() {
     let dir = scratch("collect");
     let p = plan(&dir, FOUR_STATIC);

@@ -205,6 +205,37 @@ mod tests {
     }
 
     #[test]
+    fn a_static_sweep_draws_its_coefficients_instead_of_regimes() {
+        let plan = plan_of("case = \"static\"\n[grid]\nalpha = [0.2, 0.4]\n");
+        let c = CaseState::Completed;
+        let mut rows = rows(&plan, &[(None, c), (None, c)]);
+        for (r, (cl, cd)) in rows.iter_mut().zip([(0.8, 0.3), (1.1, 0.6)]) {
+            r.summary.push(("mean_cl".into(), serde_json::json!(cl)));
+            r.summary.push(("mean_cd".into(), serde_json::json!(cd)));
+        }
+        let data = diagram_data(&plan, &rows);
+        assert!(data.is_static() && data.y.is_none());
+        assert_eq!(
+            (data.points[1].mean_cl, data.points[1].mean_cd),
+            (Some(1.1), Some(0.6))
+        );
+        let dir = std::env::temp_dir().join(format!("platefall-static-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        crate::sweep::plot::write_figures(&crate::sweep::layout::Layout::new(&dir), &data).unwrap();
+        let svg = std::fs::read_to_string(dir.join("phase.svg")).unwrap();
+        assert!(
+            svg.contains("mean C_L and C_D against alpha"),
+            "no coefficient panel"
+        );
+        assert!(svg.contains("mean_cl against alpha"), "no value panel");
+        assert!(
+            !svg.contains("motion regime"),
+            "a static sweep has no regime panel"
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
     fn figures_and_recording_are_written_for_every_kind_of_point() {
         let plan = plan_of("case = \"free\"\n[grid]\nmass = [1, 2, 3]\n");
         let regimes = [

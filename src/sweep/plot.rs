@@ -405,7 +405,8 @@ fn colour_bar<DB: DrawingBackend>(
     Ok(())
 }
 
-/// A curve of a line plot: its legend label, its points (x position, value), colour and marker.
+/// A curve of a line plot: its legend label, its points (x position, value), colour and marker
+/// (circles on a solid line, triangles on a dashed one).
 struct Series {
     label: String,
     points: Vec<(f64, f64)>,
@@ -441,9 +442,20 @@ fn curves_panel<DB: DrawingBackend>(
     }
     for c in curves {
         let colour = rgb(c.colour);
-        chart
-            .draw_series(LineSeries::new(c.points.clone(), colour.stroke_width(2)))
-            .map_err(err)?;
+        match c.marker {
+            Marker::Circle => chart
+                .draw_series(LineSeries::new(c.points.clone(), colour.stroke_width(2)))
+                .map_err(err)?,
+            // Dashed, so that the C_D curve of a group is told from its C_L curve in any colour.
+            Marker::Triangle => chart
+                .draw_series(DashedLineSeries::new(
+                    c.points.clone(),
+                    8,
+                    5,
+                    colour.stroke_width(2),
+                ))
+                .map_err(err)?,
+        };
         match c.marker {
             Marker::Circle => chart
                 .draw_series(c.points.iter().map(|&p| Circle::new(p, 4, colour.filled())))
