@@ -6,7 +6,10 @@
 //! 2. `platefall-post` — the summary and report of a run, pictures of its fields.
 //! 3. `platefall-record` — the logger thread, CSV, progress and (feature `viewer`) Rerun.
 //! 4. this crate — the command line: [`cli`] (the only layer that knows clap), [`bench`], and
-//!    [`sweep`] (parameter sweeps: many runs of this program, locally or as a Slurm job array).
+//!    [`sweep`] (parameter sweeps: many runs of this program, locally or as a Slurm job array),
+//!    and [`converge`] (refinement studies: a sweep over one refined option, analysed for the
+//!    observed order, Richardson extrapolation and GCI).
 pub mod bench;
 pub mod cli;
+pub mod converge;
 pub mod sweep;

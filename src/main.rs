@@ -14,6 +14,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Bench(args) => run_bench(args).map(|_| ExitCode::SUCCESS),
         Command::Sweep(args) => return platefall::sweep::main(args),
+        Command::Converge(args) => return platefall::converge::main(args),
         cmd => run_case(cmd),
     };
     match result {

@@ -335,6 +335,7 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
         }
         Command::Bench(_) => return Err(ArgError::NotACase("bench")),
         Command::Sweep(_) => return Err(ArgError::NotACase("sweep")),
+        Command::Converge(_) => return Err(ArgError::NotACase("converge")),
     };
     cfg.validate()?;
     if let Some((solver, _)) = cmd.case_args() {

@@ -69,6 +69,10 @@ pub enum Command {
     /// Run a parameter sweep from a plan file, locally or as a Slurm job array, and merge it into
     /// a results table and a phase diagram.
     Sweep(crate::sweep::SweepArgs),
+    /// Run a case at three or more resolutions (or time steps, domain sizes) and report the
+    /// observed order, the Richardson extrapolation and the grid-convergence index per quantity,
+    /// with the runs' 95 % intervals deciding which differences are resolved.
+    Converge(crate::converge::ConvergeArgs),
 }
 
 impl Command {
@@ -79,7 +83,7 @@ impl Command {
             Command::Forced(a) => Some((&a.solver, &a.record)),
             Command::Pinned(a) => Some((&a.solver, &a.record)),
             Command::Free(a) => Some((&a.solver, &a.record)),
-            Command::Bench(_) | Command::Sweep(_) => None,
+            Command::Bench(_) | Command::Sweep(_) | Command::Converge(_) => None,
         }
     }
 }

@@ -111,7 +111,19 @@ fn local(
     plan: &Plan,
     cases: &[CaseSpec],
 ) -> Result<u8, Failure> {
-    let jobs = match args.jobs {
+    run_local(layout, plan, cases, args.jobs, args.progress)
+}
+
+/// Runs the cases of `plan` not yet done in `layout`, `jobs` at once (default: one per core), and
+/// merges the results; the sweep's exit code. `platefall converge` runs its levels this way.
+pub fn run_local(
+    layout: &Layout,
+    plan: &Plan,
+    cases: &[CaseSpec],
+    jobs: Option<usize>,
+    progress_mode: super::args::ProgressMode,
+) -> Result<u8, Failure> {
+    let jobs = match jobs {
         Some(0) => {
             return Err(Failure::input(
                 "--jobs 0 is out of range: accepted 1 or more",
@@ -138,7 +150,7 @@ fn local(
         jobs.min(todo.len().max(1))
     );
     let presses = interrupt_counter()?;
-    let mut progress = Progress::new(args.progress, cases.len(), done);
+    let mut progress = Progress::new(progress_mode, cases.len(), done);
     let recording = plan.outputs.recording;
     let interrupted = run_pool(
         &exe,
@@ -188,7 +200,7 @@ pub fn merge(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<u8, Fai
 }
 
 /// The plan and cases of a prepared directory (its own `plan.toml`, checked against `sweep.json`).
-fn open_prepared(dir: &Path) -> Result<(Layout, Plan, Manifest), Failure> {
+pub fn open_prepared(dir: &Path) -> Result<(Layout, Plan, Manifest), Failure> {
     let layout = Layout::new(dir);
     let manifest = read_manifest(&layout)?.ok_or_else(|| {
         Failure::input(format!(
