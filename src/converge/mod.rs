@@ -48,14 +48,14 @@ fn dispatch(args: &ConvergeArgs) -> Result<u8, Failure> {
     }
     let study = args::study_of(args)?;
     let layout = Layout::new(&study.output);
-    if let Some(note) = &study.warning {
-        eprintln!("warning: {note}");
-    }
     let plan = crate::sweep::plan::parse(&study.plan_text, "converge")
         .map_err(|e| Failure::input(format!("converge: {e}")))?;
     let cases = plan
         .checked_cases()
         .map_err(|e| Failure::input(format!("converge: {e}")))?;
+    if let Some(note) = &study.warning {
+        eprintln!("warning: {note}");
+    }
     let code = run_local(&layout, &plan, &cases, Some(study.jobs), args.progress)?;
     if code == crate::sweep::EXIT_INTERRUPTED {
         return Ok(code);

@@ -133,9 +133,9 @@ mod tests {
 
     #[test]
     fn values_are_shown_at_the_precision_of_their_interval() {
-        assert_eq!(with_interval(2.71828, Some(0.0123)), "2.718 ± 0.012");
-        assert_eq!(with_interval(2.71828, Some(0.4)), "2.72 ± 0.40");
-        assert_eq!(with_interval(2.71828, None), "2.718");
+        assert_eq!(with_interval(2.61828, Some(0.0123)), "2.618 ± 0.012");
+        assert_eq!(with_interval(2.61828, Some(0.4)), "2.62 ± 0.40");
+        assert_eq!(with_interval(2.61828, None), "2.618");
         assert_eq!(with_interval(1234.4, Some(12.0)), "1234 ± 12");
     }
 }

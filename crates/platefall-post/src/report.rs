@@ -22,7 +22,7 @@ pub fn pm(x: Option<f64>, half_width: Option<f64>, digits: usize) -> String {
             let d = (1.0 - hw.log10().floor()).max(digits as f64).min(12.0) as usize;
             format!("{v:.d$} ± {hw:.d$}")
         }
-        (Some(v), Some(hw)) if hw == 0.0 => format!("{v:.digits$} ± 0"),
+        (Some(v), Some(0.0)) => format!("{v:.digits$} ± 0"),
         _ => fmt_opt(x, digits),
     }
 }
