@@ -39,6 +39,9 @@ pub struct QuantityStudy {
     pub half_widths: Vec<Option<f64>>,
     /// The triples of consecutive levels, the finest first; `triples[0]` is the headline.
     pub triples: Vec<Triple>,
+    /// The levels (their refined values) whose batch means of this quantity drift significantly
+    /// over the window: a transient is left in their means.
+    pub drifting: Vec<f64>,
 }
 
 /// The study as written to `convergence.json`.
@@ -179,7 +182,19 @@ pub fn analyse(layout: &Layout, cases: &[CaseSpec], refined: &Refined) -> Study 
                 half_width,
             })
             .collect();
+        let drifting = done
+            .iter()
+            .filter(|(_, s)| {
+                get(s, "intervals")
+                    .and_then(|i| i.get(&key))
+                    .and_then(|i| i.get("drift_significant"))
+                    .and_then(Json::as_bool)
+                    == Some(true)
+            })
+            .map(|(i, _)| i.value)
+            .collect();
         quantities.push(QuantityStudy {
+            drifting,
             key,
             values: pts.iter().map(|p| p.1).collect(),
             half_widths: pts.iter().map(|p| p.2).collect(),

@@ -121,6 +121,21 @@ pub fn markdown(s: &Study) -> String {
             }
         }
     }
+    for q in &s.quantities {
+        if !q.drifting.is_empty() {
+            let at: Vec<String> = q
+                .drifting
+                .iter()
+                .map(|v| level_label(&s.refined, *v))
+                .collect();
+            out.push_str(&format!(
+                "- {}: the batch means drift over the window at {} (a transient is left in the \
+                 mean: longer runs, or a later start, would move it)\n",
+                q.key,
+                at.join(", ")
+            ));
+        }
+    }
     for n in &s.notes {
         out.push_str(&format!("- {n}\n"));
     }

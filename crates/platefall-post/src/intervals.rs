@@ -26,7 +26,9 @@ use serde::Serialize;
 
 use super::analysis::{count_turns, TimeWindow};
 use super::regime::{cycle_events, rising_crossings, MotionClass, Regime, CROSSING_HYSTERESIS};
-use super::stats::{batch_interval, series_interval, Interval, NoInterval, LEVEL, MIN_BATCHES};
+use super::stats::{
+    batch_interval, series_interval, trend, Interval, NoInterval, LEVEL, MIN_BATCHES,
+};
 use super::summary::Summary;
 use platefall_core::config::{physical, Units};
 use platefall_core::sim::{Case, History, Quantity, RunConfig, RunRecord, StepSample};
@@ -55,6 +57,11 @@ pub struct IntervalInfo {
     pub t: Option<f64>,
     /// Why there is no interval, or how it was derived.
     pub note: Option<String>,
+    /// The change of the batch means over the window from their straight-line trend (slope ×
+    /// (batches − 1)), and whether the slope is significant at 95 %: a significant drift means
+    /// the window still holds a transient, so the mean depends on where the window starts.
+    pub drift: Option<f64>,
+    pub drift_significant: Option<bool>,
 }
 
 /// The interval keys of the summary (flattened into it): `<key>_ci95` is the half-width of the
@@ -70,6 +77,9 @@ pub struct IntervalKeys {
     pub ci_batches: Option<usize>,
     /// Why the time means have no interval, when they have none.
     pub ci_note: Option<String>,
+    /// The keys whose batch means drift significantly over the window (a transient is left in
+    /// it: the mean depends on where the window starts), with the drift; null when none does.
+    pub ci_drift: Option<String>,
     pub mean_cl_ci95: Option<f64>,
     pub mean_cd_ci95: Option<f64>,
     pub mean_cm_ci95: Option<f64>,
@@ -191,6 +201,7 @@ fn info(
             dof: Some(i.dof),
             t: Some(i.t),
             note: None,
+            ..IntervalInfo::default()
         },
         Err(why) => IntervalInfo {
             value,
@@ -216,7 +227,7 @@ impl TimeMeans<'_> {
                     .into_iter()
                     .map(|(w, m)| (w, sign * m))
                     .collect();
-                info(value, batch_interval(&b), what, b.len())
+                with_drift(info(value, batch_interval(&b), what, b.len()), &b)
             }
             Cut::Series(w) => {
                 let x: Vec<f64> = series_bins(self.h, q, *w)
@@ -264,6 +275,16 @@ impl TimeMeans<'_> {
             .or(Some("delta method on the descent and drift".into()));
         out
     }
+}
+
+/// Adds the straight-line drift of the batch means.
+fn with_drift(mut i: IntervalInfo, batches: &[(f64, f64)]) -> IntervalInfo {
+    let values: Vec<f64> = batches.iter().map(|b| b.1).collect();
+    if let Some(t) = trend(&values) {
+        i.drift = Some(t.slope * (values.len() as f64 - 1.0));
+        i.drift_significant = Some(t.significant);
+    }
+    i
 }
 
 /// Equal-weight interval of a list of observations (durations, lags, amplitudes).
@@ -446,7 +467,8 @@ pub fn intervals_of(
     // The lag of the drag peak: one value per half-turn.
     if let Some(lag) = sum.lag_cd_behind_cl {
         let lags = super::summary::lags_cd_behind_cl(&rec.samples, w);
-        let i = list_interval(lag, &lags, "half-turns", 1.0);
+        let b: Vec<(f64, f64)> = lags.iter().map(|x| (1.0, *x)).collect();
+        let i = with_drift(list_interval(lag, &lags, "half-turns", 1.0), &b);
         put(
             &mut keys,
             "lag_cd_behind_cl",
@@ -489,7 +511,8 @@ pub fn intervals_of(
         } else {
             ("half-turn durations", 2.0)
         };
-        let i = list_interval(p, &durations, what, per);
+        let b: Vec<(f64, f64)> = durations.iter().map(|x| (1.0, per * x)).collect();
+        let i = with_drift(list_interval(p, &durations, what, per), &b);
         period = Some(i.clone());
         put(&mut keys, "period", |k| &mut k.period_ci95, Some(i));
         if class.turns == (0, 0) {
@@ -563,7 +586,21 @@ pub fn intervals_of(
         }
         put(&mut keys, "period_s", |k| &mut k.period_s_ci95, ps);
     }
+    keys.ci_drift = drift_line(&keys.intervals);
     keys
+}
+
+/// "mean_omega +0.77, mean_speed +0.05" for the keys whose batch means drift significantly.
+fn drift_line(intervals: &BTreeMap<String, IntervalInfo>) -> Option<String> {
+    let parts: Vec<String> = intervals
+        .iter()
+        .filter(|(_, i)| {
+            i.drift_significant == Some(true)
+                && i.note.as_deref() != Some("converted from the non-dimensional interval")
+        })
+        .filter_map(|(k, i)| Some(format!("{k} {:+.3}", i.drift?)))
+        .collect();
+    (!parts.is_empty()).then(|| parts.join(", "))
 }
 
 #[cfg(test)]
@@ -667,6 +704,26 @@ mod tests {
             "{i:?} vs {expect}"
         );
         assert!((s.mean_omega.unwrap() - mean).abs() < 2e-3);
+    }
+
+    #[test]
+    fn a_rate_that_still_settles_is_flagged_as_drifting() {
+        // θ̇ rising from 2.7 towards 3.5 over the turns, like a coarse card's first 20 turns.
+        let cfg = free();
+        let rec = record(tumbling(
+            |_, turn| 3.5 - 0.8 * (-(turn as f64) / 5.0).exp(),
+            20.0,
+        ));
+        let s = summarize(&cfg, &rec, 0.0);
+        let i = &s.ci.intervals["mean_omega"];
+        assert_eq!(i.drift_significant, Some(true), "{i:?}");
+        assert!(i.drift.unwrap() > 0.3, "{i:?}");
+        assert!(s.ci.ci_drift.as_deref().unwrap().contains("mean_omega"));
+        assert!(crate::report::report(&cfg, &s).contains("drift"));
+        // A periodic tumble does not drift.
+        let rec = record(tumbling(|th, _| 2.5 + 0.4 * (2.0 * th).sin(), 12.0));
+        let s = summarize(&cfg, &rec, 0.0);
+        assert_eq!(s.ci.intervals["mean_omega"].drift_significant, Some(false));
     }
 
     #[test]

@@ -75,10 +75,17 @@ fn header(config: &RunConfig, sum: &Summary) -> String {
 /// How the ± figures were made, or why there are none.
 fn interval_line(sum: &Summary) -> String {
     let ci = &sum.ci;
-    match (&ci.ci_note, &ci.ci_method) {
+    let line = match (&ci.ci_note, &ci.ci_method) {
         (Some(note), _) => format!("95 % intervals: {note}"),
         (None, Some(method)) => format!("± is the 95 % confidence half-width: {method}"),
         (None, None) => "95 % intervals: none".into(),
+    };
+    match &ci.ci_drift {
+        Some(d) => format!(
+            "{line}\nwarning: the batch means drift over the window ({d}, first to last batch): \
+             a transient is left in it, so these means depend on where it starts"
+        ),
+        None => line,
     }
 }
 

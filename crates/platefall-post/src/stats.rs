@@ -328,6 +328,45 @@ pub fn batch_interval(batches: &[(f64, f64)]) -> Result<Interval, NoInterval> {
     })
 }
 
+/// A straight-line trend of a sequence against its index: the slope per step, its standard error
+/// (from the residuals, as if they were independent) and whether it differs from zero at 95 %
+/// (|slope| > t(0.975; n − 2) × its standard error).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Trend {
+    pub slope: f64,
+    pub std_error: f64,
+    pub significant: bool,
+}
+
+/// The least-squares trend of `x` (at least 4 values).
+pub fn trend(x: &[f64]) -> Option<Trend> {
+    let n = x.len();
+    if n < 4 || x.iter().any(|v| !v.is_finite()) {
+        return None;
+    }
+    let nf = n as f64;
+    let (mi, mx) = ((nf - 1.0) / 2.0, x.iter().sum::<f64>() / nf);
+    let sii: f64 = (0..n).map(|i| (i as f64 - mi).powi(2)).sum();
+    let slope = x
+        .iter()
+        .enumerate()
+        .map(|(i, v)| (i as f64 - mi) * (v - mx))
+        .sum::<f64>()
+        / sii;
+    let rss: f64 = x
+        .iter()
+        .enumerate()
+        .map(|(i, v)| (v - mx - slope * (i as f64 - mi)).powi(2))
+        .sum();
+    let std_error = (rss / (nf - 2.0) / sii).sqrt();
+    let significant = slope.abs() > t95(nf - 2.0) * std_error;
+    Some(Trend {
+        slope,
+        std_error,
+        significant,
+    })
+}
+
 /// The interval of the mean of an evenly sampled series from its integrated autocorrelation
 /// time (Sokal's window, [`SOKAL_C`]); see the module docs.
 pub fn series_interval(x: &[f64]) -> Result<Interval, NoInterval> {
@@ -528,6 +567,26 @@ mod tests {
         assert!((i.mean - 1.0).abs() < 2e-3, "{i:?}");
         // Each batch misses at most one step at either end: the spread is of order the step.
         assert!(i.half_width < 3e-3, "{i:?}");
+    }
+
+    #[test]
+    fn a_trend_is_found_in_a_ramp_and_not_in_noise() {
+        let ramp: Vec<f64> = (0..19)
+            .map(|i| 2.7 + 0.04 * i as f64 + 0.01 * (i as f64).sin())
+            .collect();
+        let t = trend(&ramp).unwrap();
+        assert!(t.significant && (t.slope - 0.04).abs() < 0.005, "{t:?}");
+        // Independent normal values: a significant slope in about 5 % of the sequences.
+        let mut rng = Rng(5);
+        let runs = 2000;
+        let hits = (0..runs)
+            .filter(|_| {
+                let x: Vec<f64> = (0..19).map(|_| rng.normal()).collect();
+                trend(&x).unwrap().significant
+            })
+            .count();
+        let rate = hits as f64 / runs as f64;
+        assert!((rate - 0.05).abs() < tolerance(runs), "false alarms {rate}");
     }
 
     #[test]
