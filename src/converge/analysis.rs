@@ -42,6 +42,9 @@ pub struct QuantityStudy {
     /// The levels (their refined values) whose batch means of this quantity drift significantly
     /// over the window: a transient is left in their means.
     pub drifting: Vec<f64>,
+    /// The levels whose batch means of this quantity alternate (lag-1 autocorrelation below
+    /// −0.5): a period of two batches, and a wide interval.
+    pub alternating: Vec<f64>,
 }
 
 /// The study as written to `convergence.json`.
@@ -182,19 +185,26 @@ pub fn analyse(layout: &Layout, cases: &[CaseSpec], refined: &Refined) -> Study 
                 half_width,
             })
             .collect();
+        let detail = |s: &Object, field: &str| -> Option<Json> {
+            get(s, "intervals")?.get(&key)?.get(field).cloned()
+        };
         let drifting = done
             .iter()
+            .filter(|(_, s)| detail(s, "drift_significant").and_then(|v| v.as_bool()) == Some(true))
+            .map(|(i, _)| i.value)
+            .collect();
+        let alternating = done
+            .iter()
             .filter(|(_, s)| {
-                get(s, "intervals")
-                    .and_then(|i| i.get(&key))
-                    .and_then(|i| i.get("drift_significant"))
-                    .and_then(Json::as_bool)
-                    == Some(true)
+                detail(s, "lag1")
+                    .and_then(|v| v.as_f64())
+                    .is_some_and(|r| r < platefall_post::intervals::ALTERNATING)
             })
             .map(|(i, _)| i.value)
             .collect();
         quantities.push(QuantityStudy {
             drifting,
+            alternating,
             key,
             values: pts.iter().map(|p| p.1).collect(),
             half_widths: pts.iter().map(|p| p.2).collect(),

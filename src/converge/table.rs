@@ -136,6 +136,21 @@ pub fn markdown(s: &Study) -> String {
             ));
         }
     }
+    for q in &s.quantities {
+        if !q.alternating.is_empty() {
+            let at: Vec<String> = q
+                .alternating
+                .iter()
+                .map(|v| level_label(&s.refined, *v))
+                .collect();
+            out.push_str(&format!(
+                "- {}: the batch means alternate at {} (the motion repeats every two batches: the \
+                 window is not whole periods of it, and the interval is wide)\n",
+                q.key,
+                at.join(", ")
+            ));
+        }
+    }
     for n in &s.notes {
         out.push_str(&format!("- {n}\n"));
     }

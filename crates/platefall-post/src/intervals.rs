@@ -27,7 +27,8 @@ use serde::Serialize;
 use super::analysis::{count_turns, TimeWindow};
 use super::regime::{cycle_events, rising_crossings, MotionClass, Regime, CROSSING_HYSTERESIS};
 use super::stats::{
-    batch_interval, series_interval, trend, Interval, NoInterval, LEVEL, MIN_BATCHES,
+    autocovariance, batch_interval, series_interval, trend, Interval, NoInterval, LEVEL,
+    MIN_BATCHES,
 };
 use super::summary::Summary;
 use platefall_core::config::{physical, Units};
@@ -62,6 +63,10 @@ pub struct IntervalInfo {
     /// the window still holds a transient, so the mean depends on where the window starts.
     pub drift: Option<f64>,
     pub drift_significant: Option<bool>,
+    /// The lag-1 autocorrelation of the observations. Near −1 the batch means alternate: the
+    /// motion repeats every two batches (a period doubling), so the window is not a whole
+    /// number of its periods and the interval is wide (conservative) rather than wrong.
+    pub lag1: Option<f64>,
 }
 
 /// The interval keys of the summary (flattened into it): `<key>_ci95` is the half-width of the
@@ -80,6 +85,9 @@ pub struct IntervalKeys {
     /// The keys whose batch means drift significantly over the window (a transient is left in
     /// it: the mean depends on where the window starts), with the drift; null when none does.
     pub ci_drift: Option<String>,
+    /// The keys whose batch means alternate (lag-1 autocorrelation below −0.5: the motion
+    /// repeats every two batches), with that autocorrelation; null when none does.
+    pub ci_alternating: Option<String>,
     pub mean_cl_ci95: Option<f64>,
     pub mean_cd_ci95: Option<f64>,
     pub mean_cm_ci95: Option<f64>,
@@ -283,6 +291,10 @@ fn with_drift(mut i: IntervalInfo, batches: &[(f64, f64)]) -> IntervalInfo {
     if let Some(t) = trend(&values) {
         i.drift = Some(t.slope * (values.len() as f64 - 1.0));
         i.drift_significant = Some(t.significant);
+    }
+    let g = autocovariance(&values, 1);
+    if g.len() == 2 && g[0] > 0.0 {
+        i.lag1 = Some(g[1] / g[0]);
     }
     i
 }
@@ -587,7 +599,30 @@ pub fn intervals_of(
         put(&mut keys, "period_s", |k| &mut k.period_s_ci95, ps);
     }
     keys.ci_drift = drift_line(&keys.intervals);
+    keys.ci_alternating = alternation_line(&keys.intervals);
     keys
+}
+
+/// Lag-1 autocorrelation below which the batch means count as alternating.
+pub const ALTERNATING: f64 = -0.5;
+
+/// "mean_cl −0.99, mean_cd −0.98" for the keys whose batch means alternate.
+fn alternation_line(intervals: &BTreeMap<String, IntervalInfo>) -> Option<String> {
+    let parts: Vec<String> = intervals
+        .iter()
+        .filter(|(_, i)| {
+            i.half_width.is_some()
+                && !i
+                    .note
+                    .as_deref()
+                    .is_some_and(|n| n.starts_with("converted"))
+        })
+        .filter_map(|(k, i)| {
+            let r = i.lag1?;
+            (r < ALTERNATING).then(|| format!("{k} {r:.2}"))
+        })
+        .collect();
+    (!parts.is_empty()).then(|| parts.join(", "))
 }
 
 /// "mean_omega +0.77, mean_speed +0.05" for the keys whose batch means drift significantly.
@@ -724,6 +759,26 @@ mod tests {
         let rec = record(tumbling(|th, _| 2.5 + 0.4 * (2.0 * th).sin(), 12.0));
         let s = summarize(&cfg, &rec, 0.0);
         assert_eq!(s.ci.intervals["mean_omega"].drift_significant, Some(false));
+    }
+
+    #[test]
+    fn turns_that_alternate_are_flagged() {
+        // Odd and even turns at two rates (a period-two tumble).
+        let cfg = free();
+        let rec = record(tumbling(
+            |_, turn| if turn % 2 == 0 { 2.4 } else { 2.8 },
+            16.0,
+        ));
+        let s = summarize(&cfg, &rec, 0.0);
+        let i = &s.ci.intervals["mean_omega"];
+        assert!(i.lag1.unwrap() < -0.8, "{i:?}");
+        assert!(s
+            .ci
+            .ci_alternating
+            .as_deref()
+            .unwrap()
+            .contains("mean_omega"));
+        assert!(crate::report::report(&cfg, &s).contains("alternate"));
     }
 
     #[test]

@@ -80,13 +80,21 @@ fn interval_line(sum: &Summary) -> String {
         (None, Some(method)) => format!("± is the 95 % confidence half-width: {method}"),
         (None, None) => "95 % intervals: none".into(),
     };
-    match &ci.ci_drift {
-        Some(d) => format!(
-            "{line}\nwarning: the batch means drift over the window ({d}, first to last batch): \
+    let mut line = line;
+    if let Some(d) = &ci.ci_drift {
+        line.push_str(&format!(
+            "\nwarning: the batch means drift over the window ({d}, first to last batch): \
              a transient is left in it, so these means depend on where it starts"
-        ),
-        None => line,
+        ));
     }
+    if let Some(a) = &ci.ci_alternating {
+        line.push_str(&format!(
+            "\nnote: the batch means alternate (lag-1 autocorrelation {a}): the motion repeats \
+             every two batches, the window is not a whole number of its periods, and the \
+             intervals are wide"
+        ));
+    }
+    line
 }
 
 fn static_part(alpha: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
