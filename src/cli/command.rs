@@ -6,6 +6,7 @@ use clap::{Parser, Subcommand};
 
 use super::args::{ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs};
 use super::bench_args::BenchArgs;
+use super::converge_args::ConvergeArgs;
 use super::record_args::RecordArgs;
 use super::sweep_args::SweepArgs;
 use crate::exit::Exit;
@@ -50,18 +51,22 @@ pub enum Command {
     /// Run a parameter sweep from a plan file, locally or as a Slurm job array, and merge it into
     /// a results table and a phase diagram.
     Sweep(SweepArgs),
+    /// Run a case at three or more resolutions (or time steps, domain sizes) and report the
+    /// observed order, the Richardson extrapolation and the grid-convergence index per quantity,
+    /// with the runs' 95 % intervals deciding which differences are resolved.
+    Converge(ConvergeArgs),
 }
 
 impl Command {
     /// The options every case subcommand shares: the solver's and the recording's (None for bench
-    /// and sweep).
+    /// sweep and converge).
     pub fn case_args(&self) -> Option<(&SolverArgs, &RecordArgs)> {
         match self {
             Command::Static(a) => Some((&a.solver, &a.record)),
             Command::Forced(a) => Some((&a.solver, &a.record)),
             Command::Pinned(a) => Some((&a.solver, &a.record)),
             Command::Free(a) => Some((&a.solver, &a.record)),
-            Command::Bench(_) | Command::Sweep(_) => None,
+            Command::Bench(_) | Command::Sweep(_) | Command::Converge(_) => None,
         }
     }
 }

@@ -14,6 +14,7 @@ pub fn run_config(cmd: &Command) -> Result<ValidatedConfig, ArgError> {
         Command::Free(a) => a.config()?,
         Command::Bench(_) => return Err(ArgError::NotACase("bench")),
         Command::Sweep(_) => return Err(ArgError::NotACase("sweep")),
+        Command::Converge(_) => return Err(ArgError::NotACase("converge")),
     };
     if let Some((solver, _)) = cmd.case_args() {
         check_whole(Param::Threads, solver.threads, 0, 256)?;

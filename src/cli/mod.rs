@@ -1,16 +1,17 @@
-//! The command line: one subcommand per case (SPEC §1) plus `bench` and `sweep`. The only layer
+//! The command line: one subcommand per case (SPEC §1) plus `bench`, `sweep` and `converge`. The only layer
 //! that knows clap; it turns flags into the library's typed descriptions (the case options into
 //! [`RunBuilder`](platefall_core::config::RunBuilder)s, the sweep's into a sweep request) and
 //! typed errors into one-line messages that name the flag and an exit code (`Exit`).
 //!
 //! Files, each using only those after it: `command` (the grammar), `config` (a case's run),
 //! `run` (running it), `sweep_args` and `sweep_cases` (the sweep's options and what it needs to
-//! know of the case subcommands), `bench_args`, `args` and `plate_args` (the case options),
+//! know of the case subcommands), `converge_args` (a refinement study's options), `bench_args`, `args` and `plate_args` (the case options),
 //! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
 mod args;
 mod bench_args;
 mod command;
 mod config;
+mod converge_args;
 mod flags;
 mod limits;
 mod plate_args;
@@ -39,6 +40,7 @@ pub fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Bench(args) => bench_args::run_bench(args).map(|()| Exit::Completed),
         Command::Sweep(args) => return sweep_args::run(args).into(),
+        Command::Converge(args) => return converge_args::run(args).into(),
         cmd => run::run_case(cmd),
     };
     match result {

@@ -112,6 +112,17 @@ pub enum ProgressMode {
     Off,
 }
 
+impl From<ProgressMode> for sweep::ProgressMode {
+    fn from(mode: ProgressMode) -> Self {
+        match mode {
+            ProgressMode::Auto => sweep::ProgressMode::Auto,
+            ProgressMode::Bar => sweep::ProgressMode::Bar,
+            ProgressMode::Lines => sweep::ProgressMode::Lines,
+            ProgressMode::Off => sweep::ProgressMode::Off,
+        }
+    }
+}
+
 impl SweepArgs {
     /// The sweep's request.
     fn request(&self) -> Result<SweepRequest, String> {
@@ -129,12 +140,7 @@ impl SweepArgs {
                 jobs: self.jobs,
                 dry_run: self.dry_run,
                 output: self.output.clone(),
-                progress: match self.progress {
-                    ProgressMode::Auto => sweep::ProgressMode::Auto,
-                    ProgressMode::Bar => sweep::ProgressMode::Bar,
-                    ProgressMode::Lines => sweep::ProgressMode::Lines,
-                    ProgressMode::Off => sweep::ProgressMode::Off,
-                },
+                progress: self.progress.into(),
                 slurm: self.slurm.then(|| {
                     let r = &self.resources;
                     SlurmOverrides {

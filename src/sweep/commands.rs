@@ -107,7 +107,7 @@ fn open_dir(
 }
 
 /// A local sweep: the cases not yet done, `--jobs` at once, then the merged results.
-fn local(
+pub(crate) fn local(
     jobs: Option<usize>,
     progress_mode: ProgressMode,
     layout: &Layout,
@@ -186,7 +186,7 @@ fn merge(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<Exit, Failu
 }
 
 /// The plan and cases of a prepared directory (its own `plan.toml`, checked against `sweep.json`).
-fn open_prepared(
+pub(crate) fn open_prepared(
     dir: &Path,
     commands: &dyn CaseCommands,
 ) -> Result<(Layout, Plan, Manifest), Failure> {

@@ -13,11 +13,13 @@
 //! `diagram` (the phase diagram's data from the results) and `plot` (the figure; `phase.rrd` is
 //! the recording crate's), `child` (one case as a child process), `layout` (paths, manifest,
 //! lock), `cases`, `plan`, `options` and `values` (the plan format and its cases), `json`
-//! (ordered objects), `failure` (exit codes, atomic writes), `clock`.
+//! (ordered objects), `failure` (exit codes, atomic writes), `clock`. `converge` is a refinement
+//! study: a sweep over one refined option, analysed for the observed order of convergence.
 mod cases;
 mod child;
 mod clock;
 mod commands;
+pub(crate) mod converge;
 mod diagram;
 mod failure;
 mod json;

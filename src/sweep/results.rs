@@ -86,11 +86,14 @@ pub(crate) fn gather(layout: &Layout, cases: &[CaseSpec]) -> Vec<Row> {
 }
 
 /// The summary keys of all rows in first-seen order (the summary's own `status` is the row's).
+/// Nested values (the per-key details of the intervals, `intervals`) stay in each case's
+/// summary: a table holds scalars, such as the half-widths `<key>_ci95`.
 fn summary_keys(rows: &[Row]) -> Vec<String> {
     let mut keys: Vec<String> = Vec::new();
     for r in rows {
-        for (k, _) in &r.summary {
-            if k != "status" && !keys.contains(k) {
+        for (k, v) in &r.summary {
+            let nested = matches!(v, Json::Object(_) | Json::Array(_));
+            if k != "status" && !nested && !keys.contains(k) {
                 keys.push(k.clone());
             }
         }

@@ -9,6 +9,10 @@
 //! - [`analysis`]: developed windows, means, the dominant lift frequency, turn counting.
 //! - [`summary`]: the run summary with its stable JSON keys; [`report`]: the end-of-run text;
 //!   [`regime`]: what a falling plate is doing (steady, fluttering, tumbling, chaotic).
+//! - [`stats`]: confidence intervals of time means of autocorrelated series (batch means,
+//!   integrated autocorrelation times, Student's t); [`intervals`]: the batches of a run and the
+//!   interval of every mean in its summary; [`convergence`]: observed order, Richardson
+//!   extrapolation and the grid-convergence index of a refinement study.
 //! - [`fields`]: the staggered-grid quantities. [`vorticity_at_nodes`] (ω = ∂v/∂x − ∂u/∂y at cell
 //!   corners), [`stream_function_at_nodes`] (ψ with u = ψ_y, v = −ψ_x, integrated from the MAC face
 //!   fluxes: exact for a discretely divergence-free field), and [`StreamFrame`], the observer frames
@@ -28,13 +32,16 @@
 //!   [`view`]: those and the wake window, the viewer's defaults of a run ([`ViewDefaults`]).
 pub mod analysis;
 pub mod contour;
+pub mod convergence;
 pub mod fields;
+pub mod intervals;
 pub mod painter;
 pub mod phase;
 pub mod plot_range;
 pub mod regime;
 pub mod report;
 pub mod resample;
+pub mod stats;
 pub mod summary;
 pub mod view;
 pub mod wake;

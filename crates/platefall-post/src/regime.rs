@@ -213,6 +213,39 @@ fn up_crossings(pts: &[(f64, f64)], mid: f64, hysteresis: f64) -> Vec<f64> {
     out
 }
 
+/// The event times behind the period of [`classify`] over `w`: the half-turn times when the
+/// plate turns, the up-crossings of θ's midpoint when it oscillates (empty when steady, or when it
+/// turns both ways). Successive differences are the durations the period is the mean of.
+pub fn cycle_events(samples: &[StepSample], w: TimeWindow, class: &MotionClass) -> Vec<f64> {
+    let pts: Vec<(f64, f64)> = samples
+        .iter()
+        .filter(|s| s.t >= w.t0 - 1e-12 && s.t <= w.t1 + 1e-12)
+        .map(|s| (s.t, s.theta))
+        .collect();
+    if pts.len() < 2 || class.regime == Regime::Steady {
+        return Vec::new();
+    }
+    match class.turns {
+        (p, n) if p > 0 && n > 0 => Vec::new(),
+        (p, n) if p + n > 0 => half_turn_times(&pts, if p > 0 { 1.0 } else { -1.0 }),
+        _ => {
+            let (lo, hi) = pts
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                    (a.min(p.1), b.max(p.1))
+                });
+            let amplitude = 0.5 * (hi - lo);
+            up_crossings(&pts, 0.5 * (lo + hi), CROSSING_HYSTERESIS * amplitude)
+        }
+    }
+}
+
+/// Times at which the signal `pts` (t, value) rises through `mid` after having been below
+/// `mid − hysteresis` (the cycle boundaries of an oscillating signal).
+pub fn rising_crossings(pts: &[(f64, f64)], mid: f64, hysteresis: f64) -> Vec<f64> {
+    up_crossings(pts, mid, hysteresis)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -14,6 +14,20 @@ fn fmt_opt(x: Option<f64>, digits: usize) -> String {
         .unwrap_or_else(|| "—".into())
 }
 
+/// `value ± half-width` when the value has a 95 % interval (the half-width to two significant
+/// digits, the value to the same decimal place), else the value as [`fmt_opt`] gives it.
+pub fn pm(x: Option<f64>, half_width: Option<f64>, digits: usize) -> String {
+    match (x, half_width) {
+        (Some(v), Some(hw)) if hw.is_finite() && hw > 0.0 => {
+            // Two significant digits of the half-width, at least `digits` decimals.
+            let d = (1.0 - hw.log10().floor()).max(digits as f64).min(12.0) as usize;
+            format!("{v:.d$} ± {hw:.d$}")
+        }
+        (Some(v), Some(0.0)) => format!("{v:.digits$} ± 0"),
+        _ => fmt_opt(x, digits),
+    }
+}
+
 fn row(quantity: &str, this_run: String, reference: &str) -> Row {
     (quantity.into(), this_run, reference.into())
 }
@@ -36,7 +50,8 @@ fn header(config: &RunConfig, sum: &Summary) -> String {
         "platefall {} — {}\n\
          status {}: {} steps to t = {:.3} in {:.1} s ({} cells, {:.0} ns/cell/step)\n\
          developed part: {} .. {} ({})\n\
-         mean C_L {}  C_D {}  C_M {}   C_L band [{}, {}]   max C_D {}\n",
+         mean C_L {}  C_D {}  C_M {}   C_L band [{}, {}]   max C_D {}\n\
+         {}\n",
         sum.case,
         config.title(),
         sum.status,
@@ -48,25 +63,49 @@ fn header(config: &RunConfig, sum: &Summary) -> String {
         fmt_opt(sum.developed_from, 2),
         fmt_opt(sum.developed_to, 2),
         sum.developed_rule,
-        fmt_opt(sum.mean_cl, 3),
-        fmt_opt(sum.mean_cd, 3),
-        fmt_opt(sum.mean_cm, 3),
+        pm(sum.mean_cl, sum.ci.mean_cl_ci95, 3),
+        pm(sum.mean_cd, sum.ci.mean_cd_ci95, 3),
+        pm(sum.mean_cm, sum.ci.mean_cm_ci95, 3),
         fmt_opt(sum.min_cl, 3),
         fmt_opt(sum.max_cl, 3),
-        fmt_opt(sum.max_cd, 3)
+        fmt_opt(sum.max_cd, 3),
+        interval_line(sum)
     )
 }
 
+/// How the ± figures were made, or why there are none.
+fn interval_line(sum: &Summary) -> String {
+    let ci = &sum.ci;
+    let line = match (&ci.ci_note, &ci.ci_method) {
+        (Some(note), _) => format!("95 % intervals: {note}"),
+        (None, Some(method)) => format!("± is the 95 % confidence half-width: {method}"),
+        (None, None) => "95 % intervals: none".into(),
+    };
+    let mut line = line;
+    if let Some(d) = &ci.ci_drift {
+        line.push_str(&format!(
+            "\nwarning: the batch means drift over the window ({d}, first to last batch): \
+             a transient is left in it, so these means depend on where it starts"
+        ));
+    }
+    if let Some(a) = &ci.ci_alternating {
+        line.push_str(&format!(
+            "\nnote: the batch means alternate (lag-1 autocorrelation {a}): the motion repeats \
+             every two batches, the window is not a whole number of its periods, and the \
+             intervals are wide"
+        ));
+    }
+    line
+}
+
 fn static_part(alpha: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
-    let strouhal = format!(
-        "{} / {}",
-        fmt_opt(sum.strouhal_chord, 3),
-        fmt_opt(sum.strouhal_width, 3)
+    let (chord, width) = (
+        pm(sum.strouhal_chord, sum.ci.strouhal_chord_ci95, 3),
+        pm(sum.strouhal_width, sum.ci.strouhal_width_ci95, 3),
     );
+    let strouhal = format!("{chord} / {width}");
     r.push_str(&format!(
-        "Strouhal: {} on the chord, {} on the projected width\n",
-        fmt_opt(sum.strouhal_chord, 3),
-        fmt_opt(sum.strouhal_width, 3)
+        "Strouhal: {chord} on the chord, {width} on the projected width\n"
     ));
     let mut table = Vec::new();
     if (alpha - 0.4).abs() < 0.05 {
@@ -74,13 +113,14 @@ fn static_part(alpha: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
     }
     if (alpha - PI / 2.0).abs() < 0.05 {
         let seed = "1.494 (seed, symmetric wake); 1.4 experiment";
-        table.push(row("mean C_D", fmt_opt(sum.mean_cd, 3), seed));
+        let cd = pm(sum.mean_cd, sum.ci.mean_cd_ci95, 3);
+        table.push(row("mean C_D", cd, seed));
     }
     if alpha.abs() <= 0.16 {
         let seed = "≈ 0.44 at α = 0.15";
         table.push(row(
             "C_L (steady up to α ≈ 0.15)",
-            fmt_opt(sum.mean_cl, 3),
+            pm(sum.mean_cl, sum.ci.mean_cl_ci95, 3),
             seed,
         ));
     }
@@ -90,8 +130,8 @@ fn static_part(alpha: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
 fn forced_part(omega: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
     r.push_str(&format!(
         "lag of max C_D behind max C_L: {} rad of α; mean moment over whole turns {}\n",
-        fmt_opt(sum.lag_cd_behind_cl, 2),
-        fmt_opt(sum.mean_cm, 4)
+        pm(sum.lag_cd_behind_cl, sum.ci.lag_cd_behind_cl_ci95, 2),
+        pm(sum.mean_cm, sum.ci.mean_cm_ci95, 4)
     ));
     let seed = [
         (1.0, "3.2", "1.1", "accelerating"),
@@ -112,12 +152,16 @@ fn forced_part(omega: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
         row("max C_L", fmt_opt(sum.peak_cl_rotation, 2), cl),
         row(
             "lag of max C_D (rad)",
-            fmt_opt(sum.lag_cd_behind_cl, 2),
+            pm(sum.lag_cd_behind_cl, sum.ci.lag_cd_behind_cl_ci95, 2),
             lag,
         ),
         row(
             "mean moment",
-            format!("{} ({})", sense.unwrap_or("—"), fmt_opt(sum.mean_cm, 4)),
+            format!(
+                "{} ({})",
+                sense.unwrap_or("—"),
+                pm(sum.mean_cm, sum.ci.mean_cm_ci95, 4)
+            ),
             m,
         ),
     ]
@@ -128,18 +172,18 @@ fn coupled_part(case: &Case, sum: &Summary, r: &mut String) -> Vec<Row> {
         "revolutions {}  autorotation established at t = {}\nmean V {}  mean θ̇ {}  mean γ {}\n",
         fmt_opt(sum.revolutions, 2),
         fmt_opt(sum.autorotation_time, 2),
-        fmt_opt(sum.mean_speed, 3),
-        fmt_opt(sum.mean_omega, 3),
-        fmt_opt(sum.mean_gamma, 3)
+        pm(sum.mean_speed, sum.ci.mean_speed_ci95, 3),
+        pm(sum.mean_omega, sum.ci.mean_omega_ci95, 3),
+        pm(sum.mean_gamma, sum.ci.mean_gamma_ci95, 3)
     ));
     r.push_str(&fall_part(sum));
     if matches!(case, Case::Pinned { .. }) {
-        let rate = fmt_opt(sum.mean_omega.map(f64::abs), 3);
+        let rate = pm(sum.mean_omega.map(f64::abs), sum.ci.mean_omega_ci95, 3);
         return vec![
             row("mean θ̇ (c/U)", rate, "1.58"),
             row(
                 "lag of max C_D behind max C_L",
-                fmt_opt(sum.lag_cd_behind_cl, 2),
+                pm(sum.lag_cd_behind_cl, sum.ci.lag_cd_behind_cl_ci95, 2),
                 "0.70 rad",
             ),
         ];
@@ -150,17 +194,17 @@ fn coupled_part(case: &Case, sum: &Summary, r: &mut String) -> Vec<Row> {
     vec![
         row(
             "mean speed (ft/s)",
-            fmt_opt(sum.mean_speed_ft_s, 2),
+            pm(sum.mean_speed_ft_s, sum.ci.mean_speed_ft_s_ci95, 2),
             "3.01 (seed), 3.75 (experiment)",
         ),
         row(
             "mean rotation (rad/s)",
-            fmt_opt(sum.mean_omega_rad_s, 2),
+            pm(sum.mean_omega_rad_s, sum.ci.mean_omega_rad_s_ci95, 2),
             "19.56 (seed), 23.4 (experiment)",
         ),
         row(
             "mean flight-path angle (rad)",
-            fmt_opt(sum.mean_gamma, 3),
+            pm(sum.mean_gamma, sum.ci.mean_gamma_ci95, 3),
             "−0.20 (seed), −0.81 (experiment)",
         ),
         row(
@@ -173,32 +217,52 @@ fn coupled_part(case: &Case, sum: &Summary, r: &mut String) -> Vec<Row> {
 
 /// What the falling plate is doing, in the run's units and, when known, physical ones.
 fn fall_part(sum: &Summary) -> String {
-    let (f, p) = (&sum.fall, &sum.physical);
-    let unit = |x: Option<f64>, u: &str, d: usize| {
-        x.map(|v| format!(" ({v:.d$} {u})")).unwrap_or_default()
+    let (f, p, ci) = (&sum.fall, &sum.physical, &sum.ci);
+    let unit = |x: Option<f64>, hw: Option<f64>, u: &str, d: usize| {
+        x.map(|_| format!(" ({} {u})", pm(x, hw, d)))
+            .unwrap_or_default()
     };
+    let cycle = ci
+        .mean_cycle_amplitude
+        .map(|_| {
+            format!(
+                " (per oscillation {})",
+                pm(ci.mean_cycle_amplitude, ci.mean_cycle_amplitude_ci95, 3)
+            )
+        })
+        .unwrap_or_default();
     let mut text = format!(
-        "regime {} (judged from t = {}): period {}{}{}, angle amplitude {} rad\n\
+        "regime {} (judged from t = {}): period {}{}{}, angle amplitude {} rad{cycle}\n\
          mean descent speed {}{}, horizontal drift {}{}, descent angle {} rad\n",
         f.regime.map_or("—", Regime::name),
         fmt_opt(f.regime_from, 2),
-        fmt_opt(f.period, 3),
-        unit(p.period_s, "s", 3),
-        unit(p.frequency_hz, "Hz", 3),
+        pm(f.period, ci.period_ci95, 3),
+        unit(p.period_s, ci.period_s_ci95, "s", 3),
+        unit(p.frequency_hz, ci.frequency_hz_ci95, "Hz", 3),
         fmt_opt(f.angle_amplitude, 3),
-        fmt_opt(f.mean_descent_speed, 3),
-        unit(p.mean_descent_speed_cm_s, "cm/s", 2),
-        fmt_opt(f.mean_horizontal_speed, 3),
-        unit(p.mean_horizontal_speed_cm_s, "cm/s", 2),
-        fmt_opt(f.descent_angle, 3),
+        pm(f.mean_descent_speed, ci.mean_descent_speed_ci95, 3),
+        unit(
+            p.mean_descent_speed_cm_s,
+            ci.mean_descent_speed_cm_s_ci95,
+            "cm/s",
+            2
+        ),
+        pm(f.mean_horizontal_speed, ci.mean_horizontal_speed_ci95, 3),
+        unit(
+            p.mean_horizontal_speed_cm_s,
+            ci.mean_horizontal_speed_cm_s_ci95,
+            "cm/s",
+            2
+        ),
+        pm(f.descent_angle, ci.descent_angle_ci95, 3),
     );
     if let (Some(u), Some(c)) = (p.velocity_scale_m_s, p.chord_m) {
         text.push_str(&format!(
             "physical units: U = {:.3} cm/s, c = {:.2} mm; mean speed {} cm/s, mean |θ̇| {} rad/s\n",
             100.0 * u,
             1e3 * c,
-            fmt_opt(p.mean_speed_cm_s, 2),
-            fmt_opt(sum.mean_omega_rad_s, 2)
+            pm(p.mean_speed_cm_s, ci.mean_speed_cm_s_ci95, 2),
+            pm(sum.mean_omega_rad_s, ci.mean_omega_rad_s_ci95, 2)
         ));
     }
     text

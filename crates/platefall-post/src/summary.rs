@@ -7,6 +7,7 @@ use std::f64::consts::PI;
 use serde::Serialize;
 
 use super::analysis::{count_turns, dominant_frequency, whole_periods, TimeWindow};
+use super::intervals::{intervals_of, IntervalKeys};
 use super::regime::{classify, regime_window, MotionClass, Regime};
 use platefall_core::config::{physical, Units};
 use platefall_core::sim::{
@@ -62,6 +63,9 @@ pub struct Summary {
     pub fall: FallKeys,
     #[serde(flatten)]
     pub physical: PhysicalKeys,
+    /// The 95 % confidence intervals of the means (`<key>_ci95`, `intervals`; see `post::intervals`).
+    #[serde(flatten)]
+    pub ci: IntervalKeys,
 }
 
 /// What a falling (or pinned) plate is doing, over the developed part; null for static and forced
@@ -179,6 +183,16 @@ fn coupled_window(
 /// For clockwise rotation the lift is taken in the rotation's own sense (−C_L): the mirror image
 /// y → −y of a counter-clockwise run turns clockwise with C_L negated and C_D unchanged.
 fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
+    let lags = lags_cd_behind_cl(samples, w);
+    (!lags.is_empty()).then(|| lags.iter().sum::<f64>() / lags.len() as f64)
+}
+
+/// The lag of [`lag_cd_behind_cl`] in each half-turn of the window.
+pub fn lags_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Vec<f64> {
+    lag_list(samples, w).unwrap_or_default()
+}
+
+fn lag_list(samples: &[StepSample], w: TimeWindow) -> Option<Vec<f64>> {
     let inside: Vec<&StepSample> = samples
         .iter()
         .filter(|s| s.t >= w.t0 && s.t <= w.t1)
@@ -206,7 +220,7 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
             k0 = k;
         }
     }
-    (!lags.is_empty()).then(|| lags.iter().sum::<f64>() / lags.len() as f64)
+    Some(lags)
 }
 
 /// The coefficient keys over the developed window `w` (Strouhal numbers for the static case).
@@ -359,6 +373,7 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         mean_omega_rad_s: None,
         fall: FallKeys::default(),
         physical: PhysicalKeys::default(),
+        ci: IntervalKeys::default(),
     };
     set_coefficients(&mut sum, config, h, w, freq);
     if !matches!(config.case, Case::Static { .. }) {
@@ -369,6 +384,7 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
     sum.mean_speed_ft_s = physical(config).and_then(|p| sum.mean_speed.map(|v| p.speed_to_ft_s(v)));
     sum.mean_omega_rad_s = units.and_then(|u| sum.mean_omega.map(|v| u.rate_rad_s(v.abs())));
     sum.physical = physical_keys(units.as_ref(), sum.mean_speed, &sum.fall);
+    sum.ci = intervals_of(config, rec, &sum, freq, motion.as_ref());
     sum
 }
 

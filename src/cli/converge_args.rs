@@ -1,0 +1,98 @@
+//! The `platefall converge` command line, turned into the study's own [`ConvergeRequest`].
+use std::path::PathBuf;
+
+use clap::{Args, Subcommand};
+
+use super::sweep_args::ProgressMode;
+use super::sweep_cases::CommandLineCases;
+use crate::exit::Exit;
+use crate::sweep::converge::{self, ConvergeRequest};
+
+const AFTER_HELP: &str = "\
+Example (the card's free fall at one plate thickness, three resolutions):
+  platefall converge --refine resolution=32,64,128 --output conv/card -- \\
+      free --thickness 0.03125 --turns 20
+
+The levels run as a sweep in DIR (DIR/plan.toml, DIR/cases/<id>/summary.json, results.csv): a level \
+whose summary is complete is not run again, so the same command resumes a stopped study. The study \
+is DIR/convergence.md and DIR/convergence.json; `platefall converge collect DIR` rewrites them from \
+the finished levels.";
+
+/// The long help's closing text: the example and the exit codes.
+fn after_help() -> String {
+    format!("{AFTER_HELP}\n\n{}", Exit::help(true))
+}
+
+/// Run one case at three or more values of a refined option (resolution, cc, cfl, dt-max or
+/// extent) and report, per quantity of its summary, the observed order of convergence, the
+/// Richardson extrapolation and the grid-convergence index, with the runs' 95 % intervals deciding
+/// which differences are resolved.
+#[derive(Args, Debug)]
+#[command(
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true,
+    after_help = Exit::help(true),
+    after_long_help = after_help()
+)]
+pub struct ConvergeArgs {
+    #[command(subcommand)]
+    pub action: Option<ConvergeAction>,
+    /// The refined option and its values, e.g. `resolution=32,64,128` (at least three; also cc,
+    /// cfl, dt-max or extent).
+    #[arg(long, value_name = "OPTION=V1,V2,V3", required = true)]
+    pub refine: Option<String>,
+    /// The study's directory (the levels' runs and the study itself).
+    #[arg(long, value_name = "DIR", required = true)]
+    pub output: Option<PathBuf>,
+    /// Levels run at once.
+    #[arg(long, short = 'j', value_name = "N", default_value_t = 1)]
+    pub jobs: usize,
+    /// Worker threads of each level's run [default: the cores divided among the --jobs]; a
+    /// `--threads` among the case's options takes precedence.
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
+    /// Progress display on stderr.
+    #[arg(long, value_enum, value_name = "MODE", default_value_t = ProgressMode::Auto)]
+    pub progress: ProgressMode,
+    /// The case and its options, as on its own command line (`free --thickness 0.03125 ...`).
+    #[arg(
+        value_name = "CASE [OPTIONS]",
+        trailing_var_arg = true,
+        allow_hyphen_values = true,
+        required = true
+    )]
+    pub case: Vec<String>,
+}
+
+/// What `converge` does besides running a study.
+#[derive(Subcommand, Debug)]
+pub enum ConvergeAction {
+    /// Rewrite DIR/convergence.md and .json from the levels that have finished.
+    Collect {
+        /// The study's directory.
+        #[arg(value_name = "DIR")]
+        dir: PathBuf,
+    },
+}
+
+impl ConvergeArgs {
+    /// The study's request (clap has checked that `--refine` and `--output` are given).
+    fn request(&self) -> ConvergeRequest {
+        match &self.action {
+            Some(ConvergeAction::Collect { dir }) => ConvergeRequest::Collect { dir: dir.clone() },
+            None => ConvergeRequest::Run {
+                refine: self.refine.clone().unwrap_or_default(),
+                output: self.output.clone().unwrap_or_default(),
+                jobs: self.jobs,
+                threads: self.threads,
+                progress: self.progress.into(),
+                case: self.case.clone(),
+            },
+        }
+    }
+}
+
+/// Runs `platefall converge ...`.
+pub fn run(args: &ConvergeArgs) -> Exit {
+    converge::main(&args.request(), &CommandLineCases)
+}
