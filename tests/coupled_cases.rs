@@ -1,4 +1,5 @@
-//! Cases B–D (SPEC §1, §6, §8) at the seed's resolution N = 16: short CI runs.
+//! Cases B–D (SPEC §1, §6, §8) at the seed's resolution N = 16 around the seed's plate (one cell,
+//! 1/16 thick): short CI runs.
 mod common;
 use platefall_core::sim::RunRecord;
 use platefall_core::sim::RunStatus;
@@ -23,6 +24,8 @@ fn forced_rotation_lift_is_periodic_at_the_forced_rate() {
         "1",
         "--resolution",
         "16",
+        "--thickness",
+        "0.0625",
         "--t-end",
         "12",
     ]);
@@ -50,6 +53,8 @@ fn pinned_card_reaches_sustained_autorotation() {
         "pinned",
         "--resolution",
         "16",
+        "--thickness",
+        "0.0625",
         "--t-end",
         "40",
         "--turns",
@@ -70,6 +75,8 @@ fn free_card_autorotates_while_falling() {
         "free",
         "--resolution",
         "16",
+        "--thickness",
+        "0.0625",
         "--t-end",
         "40",
         "--turns",

@@ -12,6 +12,8 @@ fn normal_plate_sheds_an_asymmetric_wake() {
         "1.5707963267948966",
         "--resolution",
         "16",
+        "--thickness",
+        "0.0625",
         "--t-end",
         "60",
     ]);

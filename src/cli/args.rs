@@ -6,7 +6,9 @@ use clap::{Args, ValueEnum};
 use super::flags::ArgError;
 use super::plate_args::{CouplingArg, PhysicalArgs};
 use super::record_args::RecordArgs;
+use super::shape_args::ShapeArgs;
 use super::Command;
+use platefall_core::body::PlateProps;
 use platefall_core::flow::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
 use platefall_core::grid::{GridSpec, Stretch};
 use platefall_core::param::{check_whole, Param};
@@ -28,16 +30,12 @@ pub struct SolverArgs {
     /// Write the run summary as JSON to this file.
     #[arg(long, value_name = "FILE")]
     pub summary: Option<PathBuf>,
-    /// Use the seed's exact grid (N = 16, 24 × 27 stretched intervals over 10 chords); overrides
-    /// --resolution, --extent and --growth.
-    #[arg(long, conflicts_with_all = ["thickness", "extent", "growth"])]
+    /// Use the seed's exact grid and plate (N = 16, a rectangle 1/16 thick, 24 × 27 stretched
+    /// intervals over 10 chords); overrides --resolution, --extent and --growth.
+    #[arg(long, conflicts_with_all = ["thickness", "extent", "growth", "shape", "edge_radius", "polygon"])]
     pub seed_grid: bool,
-    /// Plate thickness as a chord fraction, rounded to whole cells [default: one cell, 1/N, the
-    /// thinnest plate the grid holds; a real card is about 1/100 of its chord]. Plates two or more
-    /// cells thick have blunt edges that can hold a leading-edge vortex in a high-lift state at
-    /// α ≈ 0.4 (see the README).
-    #[arg(long, allow_negative_numbers = true)]
-    pub thickness: Option<f64>,
+    #[command(flatten)]
+    pub section: ShapeArgs,
     /// Distance from the plate to the outer boundary, in chords.
     #[arg(long, default_value_t = 15.0, allow_negative_numbers = true)]
     pub extent: f64,
@@ -250,19 +248,18 @@ pub struct FreeArgs {
 }
 
 impl SolverArgs {
-    fn grid(&self) -> GridSpec {
+    /// The grid; `physical` is a physical plate's t/c (its thickness unless --thickness is given).
+    fn grid(&self, physical: Option<f64>) -> Result<GridSpec, ArgError> {
         if self.seed_grid {
-            return GridSpec::seed();
+            return Ok(GridSpec::seed());
         }
-        GridSpec {
+        Ok(GridSpec {
             resolution: self.resolution,
-            thickness: self
-                .thickness
-                .unwrap_or(1.0 / self.resolution.max(1) as f64),
+            shape: self.section.shape(physical)?,
             extent_x: self.extent,
             extent_y: self.extent,
             stretch: Stretch::GrowthCap(self.growth),
-        }
+        })
     }
 
     fn config(
@@ -272,9 +269,10 @@ impl SolverArgs {
         default_t_end: f64,
         body: Option<BodyConfig>,
         turns: Option<f64>,
-    ) -> RunConfig {
-        RunConfig {
-            grid: self.grid(),
+        physical: Option<f64>,
+    ) -> Result<RunConfig, ArgError> {
+        Ok(RunConfig {
+            grid: self.grid(physical)?,
             flow: FlowParams {
                 re: self.re.unwrap_or(default_re),
                 cfl: self.cfl,
@@ -291,7 +289,7 @@ impl SolverArgs {
                 cc: self.cc,
             },
             case,
-        }
+        })
     }
 }
 
@@ -303,7 +301,7 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
                 alpha: a.alpha,
                 kick: a.kick,
             };
-            a.solver.config(case, 5000.0, 80.0, None, None)
+            a.solver.config(case, 5000.0, 80.0, None, None, None)?
         }
         Command::Forced(a) => {
             let t_end = a.spinup + 6.0 * std::f64::consts::PI / a.rate.abs().max(1e-3);
@@ -311,7 +309,8 @@ pub fn run_config(cmd: &Command) -> Result<RunConfig, ArgError> {
                 omega: a.rate,
                 spinup: a.spinup,
             };
-            a.solver.config(case, 5000.0, t_end.min(200.0), None, None)
+            a.solver
+                .config(case, 5000.0, t_end.min(200.0), None, None, None)?
         }
         Command::Pinned(a) => {
             let case = Case::Pinned {
@@ -357,9 +356,20 @@ fn coupled_config(
         flag: "--re",
         when: "with --preset none",
     })?;
-    let mut cfg = solver.config(case, re, default_t_end, Some(resolved.body), turns);
-    if let (None, Some(t)) = (solver.thickness, resolved.thickness) {
-        cfg.grid.thickness = t;
+    let mut cfg = solver.config(
+        case,
+        re,
+        default_t_end,
+        Some(resolved.body),
+        turns,
+        resolved.strip.as_ref().map(|s| s.aspect()),
+    )?;
+    // A physical plate's mass and inertia are those of its section.
+    if let (Some(strip), Some(body)) = (&resolved.strip, cfg.body.as_mut()) {
+        body.props = PlateProps {
+            torque: body.props.torque,
+            ..strip.props_of(&cfg.grid.shape)
+        };
     }
     Ok(cfg)
 }

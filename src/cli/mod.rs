@@ -8,6 +8,7 @@ pub mod limits;
 pub mod plate_args;
 pub mod record_args;
 pub mod run;
+pub mod shape_args;
 pub mod signals;
 pub mod threads;
 

@@ -8,7 +8,6 @@ use super::args::{AbStartArg, BodyArgs, Preset};
 use super::flags::ArgError;
 use platefall_core::body::{AbStart, Coupling, PlateProps};
 use platefall_core::config::{Fluid, PhysicalPlate, Strip};
-use platefall_core::grid::Grid;
 use platefall_core::sim::{BodyConfig, RunConfig};
 
 /// The three inputs that describe a plate physically; each of the physical options needs them all.
@@ -26,7 +25,7 @@ pub struct PhysicalArgs {
           requires_all = PLATE,
           conflicts_with_all = ["preset", "mass", "inertia", "gravity", "displaced_mass", "re"])]
     pub chord_mm: Option<f64>,
-    /// Plate thickness t in mm (the grid draws it in whole cells of c/N, at least one).
+    /// Plate thickness t in mm (the section's thickness t/c, exact unless --thickness is given).
     #[arg(
         long,
         value_name = "MM",
@@ -111,11 +110,11 @@ impl PhysicalArgs {
 }
 
 /// A plate resolved from the command line: its description, the Reynolds number it implies (if
-/// any) and, for a physical plate, its thickness in chords.
+/// any) and, for a physical plate, the strip it was derived from.
 pub struct ResolvedBody {
     pub body: BodyConfig,
     pub re: Option<f64>,
-    pub thickness: Option<f64>,
+    pub strip: Option<Strip>,
 }
 
 impl BodyArgs {
@@ -130,7 +129,7 @@ impl BodyArgs {
             return Ok(ResolvedBody {
                 body: self.body_config(Some(label(&strip)), Some(strip.scales()), props),
                 re: Some(strip.reynolds()),
-                thickness: Some(strip.aspect()),
+                strip: Some(strip),
             });
         }
         let card = PhysicalPlate::card();
@@ -158,7 +157,7 @@ impl BodyArgs {
                 props,
             ),
             re: preset.then(|| card.reynolds()),
-            thickness: None,
+            strip: None,
         })
     }
 
@@ -190,14 +189,15 @@ impl BodyArgs {
         let mut lines = Vec::new();
         if let Some(strip) = self.physical.strip() {
             lines.extend(strip.derivation());
-            if let Ok(grid) = Grid::new(&config.grid) {
+            let shape = &config.grid.shape;
+            if let Some(b) = &config.body {
                 lines.push(format!(
-                    "grid: the plate is drawn {} cell(s) thick = {:.5} c at N = {} \
-                     (t/c = {:.5}, rounded to whole cells, at least one); m*, m_f*, I* use the true t",
-                    (grid.thickness / grid.h).round(),
-                    grid.thickness,
-                    grid.spec.resolution,
-                    strip.aspect()
+                    "section: {} (exact at every N); m* = {:.4}, m_f* = {:.4}, I* = {:.5} from its \
+                     area and polar moment",
+                    shape.describe(),
+                    b.props.mass,
+                    b.props.displaced,
+                    b.props.inertia
                 ));
             }
         }
