@@ -2,11 +2,12 @@
 //! against potential-flow theory for ellipses, at several resolutions:
 //!
 //! ```text
-//! cargo run --release -p platefall-core --example added_mass -- 1,0.5,0.125 32,64,128
+//! cargo run --release -p platefall-core --example added_mass -- ellipse 1,0.5,0.125 32,64,128 [EXTENT]
 //! ```
 //!
-//! prints, for each axis ratio b/a and N, the added masses along, across and in pitch with their
-//! errors against π b², π a², π (a² − b²)²/8.
+//! prints, for each axis ratio b/a (for `rect`: thickness) and N, the added masses along,
+//! across and in pitch with their differences from π b², π a², π (a² − b²)²/8 (exact for the
+//! ellipse; for a rectangle, the ellipse of the same axes).
 use std::f64::consts::PI;
 
 use platefall_core::flow::{FlowParams, FlowSolver, Frame, OuterBc};
@@ -23,11 +24,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .map(str::to_string)
             .collect()
     };
-    let ratios: Vec<f64> = list(1, "1,0.5,0.125")
+    let rect = args.get(1).is_some_and(|s| s == "rect");
+    let ratios: Vec<f64> = list(2, "1,0.5,0.125")
         .iter()
         .map(|s| s.parse())
         .collect::<Result<_, _>>()?;
-    let ns: Vec<usize> = list(2, "32,64,128")
+    let extent: f64 = args.get(4).map_or(Ok(15.0), |s| s.parse())?;
+    let ns: Vec<usize> = list(3, "32,64,128")
         .iter()
         .map(|s| s.parse())
         .collect::<Result<_, _>>()?;
@@ -38,13 +41,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         for &n in &ns {
             let spec = GridSpec {
                 resolution: n,
-                shape: if std::env::var("PF_RECT").is_ok() {
+                shape: if rect {
                     Shape::rect(r)
                 } else {
                     Shape::Ellipse { thickness: r }
                 },
-                extent_x: 15.0,
-                extent_y: 15.0,
+                extent_x: extent,
+                extent_y: extent,
                 stretch: Stretch::GrowthCap(1.045),
             };
             let grid = Grid::new(&spec)?;

@@ -1,12 +1,13 @@
 //! The body-fixed stretched Cartesian grid (SPEC §4).
 //!
-//! The grid's core is the box that bounds the plate's section ([`Shape`]; [−½, ½] × [−t/2, t/2]
-//! for the symmetric shapes, chord = 1). Along the chord it holds cells of h = 1/N (N cells for a
-//! unit chord); across it, ⌈t/h⌉ equal cells (even for shapes other than the rectangle, so that a
-//! symmetric section has a grid line on its axis), so that the box's edges are grid lines and a
-//! rectangle's faces lie on them exactly. Outside the core the grid stretches geometrically
-//! outward from each edge with a first interval h: a patch of `n` intervals covering a length L
-//! is the seed's exponential map
+//! The grid's core holds the plate's section ([`Shape`]; chord = 1). Along the chord it spans the
+//! section's extent in cells of at most h = 1/N (N cells for a unit chord). Across it, for a
+//! rectangle, it spans exactly the thickness (the grid is fitted to the faces, which then lie on
+//! grid lines, whatever N; the cells inside are solid); for every other shape it is 2m cells of h
+//! centred on the middle of the section's extent, m = ⌈t/2h⌉, so that a symmetric section has a
+//! grid line on its axis and no fluid cell is thinner than h. Outside the core the grid
+//! stretches geometrically outward from each edge with a first interval h: a patch of `n`
+//! intervals covering a length L is the seed's exponential map
 //!
 //! ```text
 //!     s(η) = L (e^{Cη} − 1) / (e^{C} − 1),   η = k/n,  k = 0..n,
@@ -96,6 +97,56 @@ impl GridSpec {
     }
 }
 
+impl GridSpec {
+    /// Refuses a plate thinner somewhere than the grid can follow at this resolution (a grid face
+    /// that would see fluid on both sides of the plate), naming the smallest resolution that
+    /// follows it. A rectangle is followed at every resolution (the grid is fitted to it).
+    pub fn check_representable(&self) -> Result<(), InputError> {
+        if self.shape.fits_grid() {
+            return Ok(());
+        }
+        let defect = |spec: &GridSpec| {
+            Grid::new(spec)
+                .ok()
+                .and_then(|g| crate::flow::wall::first_defect(&g))
+        };
+        let Some(at) = defect(self) else {
+            return Ok(());
+        };
+        let with = |n: usize| GridSpec {
+            resolution: n,
+            ..self.clone()
+        };
+        // Up in steps of a quarter to the first resolution that works, then back to the smallest.
+        let mut hi = self.resolution;
+        let found = loop {
+            hi = ((hi as f64 * 1.25).ceil() as usize).min(1024);
+            if defect(&with(hi)).is_none() {
+                break Some(hi);
+            }
+            if hi >= 1024 {
+                break None;
+            }
+        };
+        let smallest = match found {
+            Some(hi) => {
+                let n = (self.resolution + 1..hi)
+                    .find(|&n| defect(&with(n)).is_none())
+                    .unwrap_or(hi);
+                format!("the smallest resolution that follows it is {n} (--resolution {n})")
+            }
+            None => "no resolution up to 1024 follows it; give the section a thicker part there"
+                .to_string(),
+        };
+        Err(InputError::TooThin {
+            resolution: self.resolution,
+            x: at[0],
+            y: at[1],
+            smallest,
+        })
+    }
+}
+
 /// Solves `C = n ln(1 + (h/L)(e^C − 1))` for the non-trivial root C > 0 (SPEC §4).
 ///
 /// A root exists exactly when the patch must stretch, i.e. when `n h < L`. Bracketed bisection to
@@ -141,17 +192,12 @@ pub fn intervals_for_growth(h: f64, length: f64, cap: f64) -> usize {
 }
 
 /// Cells across a core of width `w`: w/h rounded (at least one) for a fitted rectangle, whose
-/// inside is solid; otherwise ⌈w/h⌉, made even when `even`, so no cell exceeds h.
-fn core_cells(w: f64, h: f64, fitted: bool, even: bool) -> usize {
-    let n = if fitted {
+/// inside is solid; otherwise ⌈w/h⌉, so no cell exceeds h.
+fn core_cells(w: f64, h: f64, fitted: bool) -> usize {
+    if fitted {
         (w / h).round().max(1.0) as usize
     } else {
         ((w / h) * (1.0 - 1e-12)).ceil().max(1.0) as usize
-    };
-    if even && n % 2 == 1 {
-        n + 1
-    } else {
-        n
     }
 }
 
@@ -208,10 +254,17 @@ impl Grid {
         let n = spec.resolution;
         let h = 1.0 / n as f64;
         let outline = spec.shape.outline();
-        let (lo, hi) = outline.bounds();
+        let (mut lo, mut hi) = outline.bounds();
         let fitted = spec.shape.fits_grid();
-        let core_x = core_cells(hi[0] - lo[0], h, fitted, false);
-        let core_y = core_cells(hi[1] - lo[1], h, fitted, !fitted);
+        let core_x = core_cells(hi[0] - lo[0], h, fitted);
+        let core_y = if fitted {
+            core_cells(hi[1] - lo[1], h, true)
+        } else {
+            let (mid, half) = (0.5 * (lo[1] + hi[1]), 0.5 * (hi[1] - lo[1]));
+            let m = ((half / h) * (1.0 - 1e-12)).ceil().max(1.0);
+            (lo[1], hi[1]) = (mid - m * h, mid + m * h);
+            2 * m as usize
+        };
         let (nsx, nsy) = match spec.stretch {
             Stretch::GrowthCap(r) => (
                 intervals_for_growth(h, spec.extent_x, r),
@@ -245,7 +298,7 @@ impl Grid {
             nx,
             ny,
             h,
-            thickness: hi[1] - lo[1],
+            thickness: spec.shape.thickness(),
             body: Some(outline),
             xc: centres(&xn),
             yc: centres(&yn),

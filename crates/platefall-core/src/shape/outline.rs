@@ -270,12 +270,13 @@ impl Covered {
         (len > 0.0).then(|| moment / len)
     }
 
-    /// Number of separate uncovered pieces of [a, b] (of positive length).
-    pub fn open_pieces(&self, a: f64, b: f64) -> usize {
+    /// Number of separate uncovered pieces of [a, b] (of positive length); covered intervals no
+    /// longer than `tol` (where the line only touches the boundary) do not separate pieces.
+    pub fn open_pieces(&self, a: f64, b: f64, tol: f64) -> usize {
         let mut count = 0;
         let mut from = a;
         for iv in &self.intervals {
-            if iv.hi < a || iv.lo > b {
+            if iv.hi < a || iv.lo > b || iv.hi - iv.lo <= tol {
                 continue;
             }
             if iv.lo > from {
@@ -419,9 +420,12 @@ mod tests {
         let v = r.covered(LineDir::Vertical, 0.5);
         assert_eq!((v.intervals[0].lo, v.intervals[0].hi), (-0.25, 0.25));
         assert!((v.length_in(0.0, 1.0) - 0.25).abs() < 1e-15);
-        assert_eq!(v.open_pieces(-1.0, 1.0), 2);
-        assert_eq!(v.open_pieces(0.0, 1.0), 1);
-        assert_eq!(v.open_pieces(-0.1, 0.1), 0);
+        assert_eq!(v.open_pieces(-1.0, 1.0, 0.0), 2);
+        assert_eq!(v.open_pieces(0.0, 1.0, 0.0), 1);
+        assert_eq!(v.open_pieces(-0.1, 0.1, 0.0), 0);
+        // A line touching a corner is not split by it.
+        let corner = r.covered(LineDir::Horizontal, 0.25 + 0.0);
+        assert_eq!(corner.open_pieces(-2.0, 2.0, 1e-12), 2);
     }
 
     #[test]

@@ -92,6 +92,7 @@ impl RunConfig {
     /// Validates every value; the first bad one is reported.
     pub fn validate(&self) -> Result<(), InputError> {
         self.grid.validate()?;
+        self.grid.check_representable()?;
         self.flow.validate()?;
         let t = &self.time;
         check_range(Param::TEnd, t.t_end, 0.0, 1e5, true)?;

@@ -157,7 +157,7 @@ impl Faces {
         if cov.intervals.is_empty() {
             return 1.0;
         }
-        if cov.open_pieces(lo, hi) >= 2 {
+        if cov.open_pieces(lo, hi, tol) >= 2 {
             self.defects.push(Defect { at });
         }
         let covered = cov.length_in(lo, hi);

@@ -143,11 +143,7 @@ impl Loads {
         for s in &self.pressure {
             let value = |q: &Probe| p[q.i + nx * q.j];
             let p1 = value(&s.first);
-            let pw = match if std::env::var("PF_P1").is_ok() {
-                &None
-            } else {
-                &s.second
-            } {
+            let pw = match &s.second {
                 Some(q) => (q.d * p1 - s.first.d * value(q)) / (q.d - s.first.d),
                 None => p1,
             };

@@ -31,6 +31,15 @@ use crate::grid::Grid;
 /// Points within this fraction of h of the boundary count as on it.
 const ON_BOUNDARY: f64 = 1e-9;
 
+/// Where the plate of `grid` is thinner than the grid can follow (a face with fluid on both
+/// sides of the plate), if anywhere: the first such face's point.
+pub fn first_defect(grid: &Grid) -> Option<[f64; 2]> {
+    let body = grid.body.as_ref()?;
+    let lines = Lines::new(grid, body);
+    let faces = Faces::new(grid, body, &lines, ON_BOUNDARY * grid.h);
+    faces.defects.first().map(|d| d.at)
+}
+
 /// Everything the solver knows of the plate.
 #[derive(Clone, Debug)]
 pub struct Wall {
