@@ -77,6 +77,7 @@ pub fn summary_keys(argv: &[String]) -> Result<Vec<String>, String> {
         samples: Default::default(),
         t_release: 0.0,
         cells: 0,
+        recirculation_length: None,
     };
     let summary = summarize(&config, &empty, 0.0);
     let text = serde_json::to_string(&summary).map_err(|e| e.to_string())?;

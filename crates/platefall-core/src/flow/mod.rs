@@ -31,6 +31,7 @@ pub mod plate;
 pub mod pressure;
 mod split_cholesky;
 pub mod transport;
+mod wake;
 pub mod wall;
 pub mod zones;
 

@@ -85,4 +85,7 @@ pub struct RunRecord {
     /// Time of release (coupled cases) or of the end of spin-up (forced); 0 for static.
     pub t_release: f64,
     pub cells: usize,
+    /// A static plate's recirculation length at the end of the run (chords; see
+    /// `FlowSolver::recirculation_length`).
+    pub recirculation_length: Option<f64>,
 }
