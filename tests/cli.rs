@@ -51,8 +51,38 @@ fn bad_values_are_refused_naming_the_value_and_range() {
             "(0, 10000]",
         ),
         (
-            "free --chord-mm 10 --thickness-mm 6 --plate-density 2700",
-            "(0, 5]",
+            "free --chord-mm 10 --thickness-mm 12 --plate-density 2700",
+            "(0, 10]",
+        ),
+        (
+            "static --thickness 0",
+            "--thickness: thickness 0 is out of range: accepted (0, 1]",
+        ),
+        ("static --thickness 1.5", "accepted (0, 1]"),
+        (
+            "static --shape rounded --thickness 0.1 --edge-radius 0.06",
+            "--edge-radius: edge radius 0.06 is out of range: accepted (0, 0.05]",
+        ),
+        (
+            "static --shape naca00x2",
+            "is not a NACA four-digit section",
+        ),
+        (
+            "static --shape naca2012",
+            "is not a NACA four-digit section",
+        ),
+        ("static --shape hexagon", "`hexagon` is not a shape"),
+        (
+            "static --edge-radius 0.01",
+            "--edge-radius only goes with --shape rounded",
+        ),
+        (
+            "static --shape circle --thickness 0.1",
+            "--thickness does not go with",
+        ),
+        (
+            "static --shape polygon",
+            "--polygon goes with --shape polygon",
         ),
         (
             "free --chord-mm 10 --thickness-mm 1 --plate-density -1",
@@ -194,7 +224,7 @@ fn a_physical_plate_prints_its_derivation_and_reports_in_physical_units() {
         "Re = U c/ν = 911.0",
         "m_f* = t/c = 0.0500",
         "weight (m* − m_f*) g* = +1.0000 (sinks)",
-        "drawn 1 cell(s) thick = 0.12500 c at N = 8",
+        "section: rectangle t/c = 0.05 (exact at every N)",
     ] {
         assert!(err.contains(line), "stderr lacks {line:?}: {err}");
     }
@@ -215,4 +245,44 @@ fn run_with_summary(name: &str, args: &[&str]) -> (i32, String, serde_json::Valu
     let (code, _, err) = platefall(&all);
     let text = std::fs::read_to_string(&summary).unwrap_or_default();
     (code, err, serde_json::from_str(&text).unwrap_or_default())
+}
+
+#[test]
+fn bad_polygons_are_refused_naming_the_fault() {
+    let dir = std::env::temp_dir().join(format!("platefall-polygons-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let cases = [
+        ("open", "0 0\n1 0\n1 1\n0 1\n", "is not closed"),
+        ("bow", "0 0\n1 1\n1 0\n0 1\n0 0\n", "intersects itself"),
+        ("two", "0 0\n1 0\n0 0\n", "at least 3 vertices"),
+        ("text", "0 0\n1 zero\n", "line 2 is `1 zero`"),
+    ];
+    for (name, text, needle) in cases {
+        let path = dir.join(format!("{name}.txt"));
+        std::fs::write(&path, text).unwrap();
+        let p = path.to_string_lossy().into_owned();
+        let (code, _, err) =
+            platefall(&["static", "--shape", "polygon", "--polygon", &p, "--no-save"]);
+        assert_eq!(code, 2, "{name}: exit {code}, stderr {err}");
+        let first = err.lines().next().unwrap_or("");
+        assert!(
+            first.starts_with("error:") && first.contains("--polygon") && first.contains(needle),
+            "{name}: stderr {err:?} lacks {needle:?}"
+        );
+        assert_eq!(err.lines().count(), 1, "{name}: one line, got {err:?}");
+    }
+    let missing = dir.join("missing.txt").to_string_lossy().into_owned();
+    let (code, _, err) = platefall(&[
+        "static",
+        "--shape",
+        "polygon",
+        "--polygon",
+        &missing,
+        "--no-save",
+    ]);
+    assert!(
+        code == 2 && err.contains("--polygon") && err.contains("missing.txt"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -299,6 +299,7 @@ fn failing_cases_are_listed_with_their_exit_codes_and_the_others_complete() {
 [fixed]
 rate = 2
 resolution = 16
+thickness = 0.0625
 t-end = 1.5
 far-field = "explicit"
 [zip]

@@ -6,6 +6,7 @@ use clap::{Args, ValueEnum};
 use super::flags::ArgError;
 use super::plate_args::{BodyArgs, CoupledBuilder};
 use super::record_args::RecordArgs;
+use super::shape_args::ShapeArgs;
 use platefall_core::config::{defaults, RunBuilder};
 use platefall_core::flow::FarFieldScheme;
 use platefall_core::sim::ValidatedConfig;
@@ -26,16 +27,12 @@ pub struct SolverArgs {
     /// Write the run summary as JSON to this file.
     #[arg(long, value_name = "FILE")]
     pub summary: Option<PathBuf>,
-    /// Use the seed's exact grid (N = 16, 24 × 27 stretched intervals over 10 chords); overrides
-    /// --resolution, --extent and --growth.
-    #[arg(long, conflicts_with_all = ["thickness", "extent", "growth"])]
+    /// Use the seed's exact grid and plate (N = 16, a rectangle 1/16 thick, 24 × 27 stretched
+    /// intervals over 10 chords); overrides --resolution, --extent and --growth.
+    #[arg(long, conflicts_with_all = ["thickness", "extent", "growth", "shape", "edge_radius", "polygon"])]
     pub seed_grid: bool,
-    /// Plate thickness as a chord fraction, rounded to whole cells [default: one cell, 1/N, the
-    /// thinnest plate the grid holds; a real card is about 1/100 of its chord]. Plates two or more
-    /// cells thick have blunt edges that can hold a leading-edge vortex in a high-lift state at
-    /// α ≈ 0.4 (docs/verification.md).
-    #[arg(long, allow_negative_numbers = true)]
-    pub thickness: Option<f64>,
+    #[command(flatten)]
+    pub section: ShapeArgs,
     /// Distance from the plate to the outer boundary, in chords.
     #[arg(long, default_value_t = defaults::EXTENT, allow_negative_numbers = true)]
     pub extent: f64,
@@ -174,8 +171,13 @@ pub struct FreeArgs {
 }
 
 impl SolverArgs {
-    /// Applies the solver options to a run of any case.
-    fn apply<C>(&self, mut b: RunBuilder<C>) -> RunBuilder<C> {
+    /// Applies the solver options to a run of any case; `physical` is a physical plate's t/c,
+    /// the section's thickness unless --thickness is given.
+    fn apply<C>(
+        &self,
+        mut b: RunBuilder<C>,
+        physical: Option<f64>,
+    ) -> Result<RunBuilder<C>, ArgError> {
         b = b
             .resolution(self.resolution)
             .extent(self.extent)
@@ -184,12 +186,11 @@ impl SolverArgs {
             .dt_max(self.dt_max)
             .cc(self.cc)
             .near_field(self.near_x, self.near_y);
-        if let Some(t) = self.thickness {
-            b = b.thickness(t);
-        }
-        if self.seed_grid {
-            b = b.seed_grid();
-        }
+        b = if self.seed_grid {
+            b.seed_grid()
+        } else {
+            b.shape(self.section.shape(physical)?)
+        };
         if let Some(re) = self.re {
             b = b.re(re);
         }
@@ -199,7 +200,7 @@ impl SolverArgs {
         if let Some(t) = self.t_end {
             b = b.t_end(t);
         }
-        b
+        Ok(b)
     }
 }
 
@@ -207,7 +208,7 @@ impl StaticArgs {
     /// The validated run.
     pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
         let b = RunBuilder::static_plate(self.alpha).kick(self.kick);
-        Ok(self.solver.apply(b).build()?)
+        Ok(self.solver.apply(b, None)?.build()?)
     }
 }
 
@@ -215,25 +216,29 @@ impl ForcedArgs {
     /// The validated run.
     pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
         let b = RunBuilder::forced(self.rate).spinup(self.spinup);
-        Ok(self.solver.apply(b).build()?)
+        Ok(self.solver.apply(b, None)?.build()?)
     }
 }
 
 impl PinnedArgs {
     /// The validated run.
     pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
-        let b = RunBuilder::pinned(self.body.plate()?)
+        let plate = self.body.plate()?;
+        let physical = plate.thickness();
+        let b = RunBuilder::pinned(plate)
             .alpha0(self.alpha0)
             .speed(self.v0)
             .body_options(&self.body);
-        Ok(self.solver.apply(b).build()?)
+        Ok(self.solver.apply(b, physical)?.build()?)
     }
 }
 
 impl FreeArgs {
     /// The validated run.
     pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
-        let mut b = RunBuilder::free(self.body.plate()?)
+        let plate = self.body.plate()?;
+        let physical = plate.thickness();
+        let mut b = RunBuilder::free(plate)
             .gamma0(self.gamma0)
             .body_options(&self.body);
         b = match self.theta0 {
@@ -243,6 +248,6 @@ impl FreeArgs {
         if let Some(v0) = self.v0 {
             b = b.v0(v0);
         }
-        Ok(self.solver.apply(b).build()?)
+        Ok(self.solver.apply(b, physical)?.build()?)
     }
 }

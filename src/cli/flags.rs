@@ -6,6 +6,9 @@ pub fn flag(p: Param) -> &'static str {
     match p {
         Param::Resolution => "--resolution",
         Param::Thickness => "--thickness",
+        Param::Shape => "--shape",
+        Param::EdgeRadius => "--edge-radius",
+        Param::Polygon => "--polygon",
         Param::ExtentX | Param::ExtentY => "--extent",
         Param::Growth => "--growth",
         Param::StretchIntervals => "--seed-grid",
@@ -57,6 +60,19 @@ pub enum ArgError {
     /// A subcommand that describes no run.
     #[error("`{0}` is not a case subcommand (static, forced, pinned, free)")]
     NotACase(&'static str),
+    /// A flag given where it does not apply.
+    #[error("{flag} {when}")]
+    Refused {
+        flag: &'static str,
+        when: &'static str,
+    },
+    /// A file named by a flag that cannot be read or holds bad data.
+    #[error("{flag} {path}: {why}")]
+    File {
+        flag: &'static str,
+        path: String,
+        why: String,
+    },
 }
 
 impl From<InputError> for ArgError {
@@ -82,5 +98,7 @@ fn input_message(e: &InputError) -> String {
         }
         InputError::Missing { param, why } => format!("{} is required {why}", flag(*param)),
         InputError::MissingPlate => e.to_string(),
+        InputError::Shape(s) => format!("{}: {s}", flag(s.param())),
+        InputError::TooThin { .. } => format!("{}: {e}", flag(Param::Resolution)),
     }
 }

@@ -1,11 +1,12 @@
-//! The command line: one subcommand per case (SPEC §1) plus `bench`, `sweep` and `converge`. The only layer
-//! that knows clap; it turns flags into the library's typed descriptions (the case options into
+//! The command line: one subcommand per case (SPEC §1) plus `bench`, `sweep` and `converge`. The
+//! only layer that knows clap; it turns flags into the library's typed descriptions (the case options into
 //! [`RunBuilder`](platefall_core::config::RunBuilder)s, the sweep's into a sweep request) and
 //! typed errors into one-line messages that name the flag and an exit code (`Exit`).
 //!
 //! Files, each using only those after it: `command` (the grammar), `config` (a case's run),
 //! `run` (running it), `sweep_args` and `sweep_cases` (the sweep's options and what it needs to
-//! know of the case subcommands), `converge_args` (a refinement study's options), `bench_args`, `args` and `plate_args` (the case options),
+//! know of the case subcommands), `converge_args` (a refinement study's options), `bench_args`,
+//! `args`, `plate_args` and `shape_args` (the case options: solver, plate, section),
 //! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
 mod args;
 mod bench_args;
@@ -17,6 +18,7 @@ mod limits;
 mod plate_args;
 mod record_args;
 mod run;
+mod shape_args;
 mod signals;
 mod sweep_args;
 mod sweep_cases;

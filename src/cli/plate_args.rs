@@ -88,7 +88,7 @@ pub struct PhysicalArgs {
           requires_all = PLATE,
           conflicts_with_all = ["preset", "mass", "inertia", "gravity", "displaced_mass", "re"])]
     pub chord_mm: Option<f64>,
-    /// Plate thickness t in mm (the grid draws it in whole cells of c/N, at least one).
+    /// Plate thickness t in mm (the section's thickness t/c, exact unless --thickness is given).
     #[arg(
         long,
         value_name = "MM",
@@ -246,20 +246,22 @@ impl BodyArgs {
     }
 
     /// What to tell the user before the run: a physical plate's derivation of its parameters and
-    /// how the grid draws its thickness; the explicit-coupling advice for a light plate.
+    /// its section; the explicit-coupling advice for a light plate.
     pub fn notes(&self, config: &ValidatedConfig) -> Vec<String> {
         let mut lines = Vec::new();
         if let Some(strip) = self.physical.strip() {
             lines.extend(strip.derivation());
-            let grid = config.grid();
-            lines.push(format!(
-                "grid: the plate is drawn {} cell(s) thick = {:.5} c at N = {} \
-                 (t/c = {:.5}, rounded to whole cells, at least one); m*, m_f*, I* use the true t",
-                (grid.thickness / grid.h).round(),
-                grid.thickness,
-                grid.spec.resolution,
-                strip.aspect()
-            ));
+            let shape = &config.grid.shape;
+            if let Some(b) = &config.body {
+                lines.push(format!(
+                    "section: {} (exact at every N); m* = {:.4}, m_f* = {:.4}, I* = {:.5} from its \
+                     area and polar moment",
+                    shape.describe(),
+                    b.props.mass,
+                    b.props.displaced,
+                    b.props.inertia
+                ));
+            }
         }
         if let Some(b) = config
             .body

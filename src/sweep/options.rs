@@ -49,6 +49,7 @@ pub(crate) fn summary_keys(config: &RunConfig) -> Result<Vec<String>, PlanError>
         samples: Default::default(),
         t_release: 0.0,
         cells: 0,
+        recirculation_length: None,
     };
     let summary = summarize(config, &empty, 0.0);
     let text = serde_json::to_string(&summary).map_err(|e| PlanError(e.to_string()))?;

@@ -1,9 +1,13 @@
 //! The body-fixed stretched Cartesian grid (SPEC §4).
 //!
-//! The plate occupies the rectangle [−½, ½] × [−t/2, t/2] in body coordinates (chord = 1). The grid is
-//! uniform with spacing h = 1/N over that core (N cells along the chord, `n_thick` cells through the
-//! plate) and stretches geometrically outward from each edge of the core: a patch of `n` intervals
-//! covering a length L is the seed's exponential map
+//! The grid's core holds the plate's section ([`Shape`]; chord = 1). Along the chord it spans the
+//! section's extent in cells of at most h = 1/N (N cells for a unit chord). Across it, for a
+//! rectangle, it spans exactly the thickness (the grid is fitted to the faces, which then lie on
+//! grid lines, whatever N; the cells inside are solid); for every other shape it is 2m cells of h
+//! centred on the middle of the section's extent, m = ⌈t/2h⌉, so that a symmetric section has a
+//! grid line on its axis and no fluid cell is thinner than h. Outside the core the grid
+//! stretches geometrically outward from each edge with a first interval h: a patch of `n`
+//! intervals covering a length L is the seed's exponential map
 //!
 //! ```text
 //!     s(η) = L (e^{Cη} − 1) / (e^{C} − 1),   η = k/n,  k = 0..n,
@@ -13,14 +17,15 @@
 //! Consecutive intervals of this map grow by the constant ratio r = e^{C/n}, so a cap on the growth
 //! ratio fixes the number of intervals ([`intervals_for_growth`]).
 use crate::param::{check_range, check_whole, InputError, Param};
+use crate::shape::{LineDir, Outline, Shape};
 
-/// What the user asks for: resolution, plate thickness, extent and growth cap.
+/// What the user asks for: resolution, the plate's section, extent and growth cap.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct GridSpec {
     /// Cells per chord, N (h = 1/N).
     pub resolution: usize,
-    /// Plate thickness as a chord fraction; rounded to a whole number of cells, at least one.
-    pub thickness: f64,
+    /// The plate's section (exact: it does not depend on the resolution).
+    pub shape: Shape,
     /// Distance from each plate edge (x) to the outer boundary, in chords.
     pub extent_x: f64,
     /// Distance from each plate face (y) to the outer boundary, in chords.
@@ -44,19 +49,19 @@ impl GridSpec {
     pub fn seed() -> Self {
         GridSpec {
             resolution: 16,
-            thickness: 1.0 / 16.0,
+            shape: Shape::rect(1.0 / 16.0),
             extent_x: 10.0,
             extent_y: 10.0,
             stretch: Stretch::Intervals { nx: 24, ny: 27 },
         }
     }
 
-    /// A modern grid: N cells per chord, a one-cell plate (the thinnest the grid holds), 15 chords of
-    /// extent, 4.5 % growth cap.
+    /// A modern grid: N cells per chord around a rectangle one cell thick (t = 1/N), 15 chords
+    /// of extent, 4.5 % growth cap.
     pub fn modern(resolution: usize) -> Self {
         GridSpec {
             resolution,
-            thickness: 1.0 / resolution.max(1) as f64,
+            shape: Shape::rect(1.0 / resolution.max(1) as f64),
             extent_x: 15.0,
             extent_y: 15.0,
             stretch: Stretch::GrowthCap(1.045),
@@ -68,7 +73,7 @@ impl GridSpec {
         let n = self.resolution;
         check_whole(Param::Resolution, n, 4, 1024)?;
         let h = 1.0 / n as f64;
-        check_range(Param::Thickness, self.thickness, 0.0, 0.5, true)?;
+        self.shape.validate().map_err(InputError::from)?;
         check_range(Param::ExtentX, self.extent_x, 1.0, 200.0, false)?;
         check_range(Param::ExtentY, self.extent_y, 1.0, 200.0, false)?;
         match self.stretch {
@@ -89,6 +94,56 @@ impl GridSpec {
             }
         }
         Ok(())
+    }
+}
+
+impl GridSpec {
+    /// Refuses a plate thinner somewhere than the grid can follow at this resolution (a grid face
+    /// that would see fluid on both sides of the plate), naming the smallest resolution that
+    /// follows it. A rectangle is followed at every resolution (the grid is fitted to it).
+    pub fn check_representable(&self) -> Result<(), InputError> {
+        if self.shape.fits_grid() {
+            return Ok(());
+        }
+        let defect = |spec: &GridSpec| {
+            Grid::new(spec)
+                .ok()
+                .and_then(|g| crate::flow::wall::first_defect(&g))
+        };
+        let Some(at) = defect(self) else {
+            return Ok(());
+        };
+        let with = |n: usize| GridSpec {
+            resolution: n,
+            ..self.clone()
+        };
+        // Up in steps of a quarter to the first resolution that works, then back to the smallest.
+        let mut hi = self.resolution;
+        let found = loop {
+            hi = ((hi as f64 * 1.25).ceil() as usize).min(1024);
+            if defect(&with(hi)).is_none() {
+                break Some(hi);
+            }
+            if hi >= 1024 {
+                break None;
+            }
+        };
+        let smallest = match found {
+            Some(hi) => {
+                let n = (self.resolution + 1..hi)
+                    .find(|&n| defect(&with(n)).is_none())
+                    .unwrap_or(hi);
+                format!("the smallest resolution that follows it is {n} (--resolution {n})")
+            }
+            None => "no resolution up to 1024 follows it; give the section a thicker part there"
+                .to_string(),
+        };
+        Err(InputError::TooThin {
+            resolution: self.resolution,
+            x: at[0],
+            y: at[1],
+            smallest,
+        })
     }
 }
 
@@ -136,6 +191,16 @@ pub fn intervals_for_growth(h: f64, length: f64, cap: f64) -> usize {
     (n as usize).max(1)
 }
 
+/// Cells across a core of width `w`: w/h rounded (at least one) for a fitted rectangle, whose
+/// inside is solid; otherwise ⌈w/h⌉, so no cell exceeds h.
+fn core_cells(w: f64, h: f64, fitted: bool) -> usize {
+    if fitted {
+        (w / h).round().max(1.0) as usize
+    } else {
+        ((w / h) * (1.0 - 1e-12)).ceil().max(1.0) as usize
+    }
+}
+
 /// Offsets 0 = s₀ < s₁ < … < s_n = L of a stretched patch with first interval h (SPEC §4).
 pub fn stretched_offsets(h: f64, length: f64, n: usize) -> Vec<f64> {
     match stretch_coefficient(h, length, n) {
@@ -158,8 +223,10 @@ pub struct Grid {
     pub ny: usize,
     /// Uniform core spacing h = 1/N.
     pub h: f64,
-    /// Actual plate thickness (a whole number of cells).
+    /// The plate's thickness (exactly the shape's).
     pub thickness: f64,
+    /// The plate's outline (None for a grid without a plate, for verification).
+    pub body: Option<Outline>,
     pub xn: Vec<f64>,
     pub yn: Vec<f64>,
     /// Cell centres and widths.
@@ -167,7 +234,7 @@ pub struct Grid {
     pub yc: Vec<f64>,
     pub dx: Vec<f64>,
     pub dy: Vec<f64>,
-    /// Plate cells are i0..i1 × j0..j1.
+    /// The core (the box bounding the plate) is cells i0..i1 × j0..j1.
     pub i0: usize,
     pub i1: usize,
     pub j0: usize,
@@ -186,8 +253,18 @@ impl Grid {
         spec.validate()?;
         let n = spec.resolution;
         let h = 1.0 / n as f64;
-        let n_thick = ((spec.thickness / h).round() as usize).max(1);
-        let thickness = n_thick as f64 * h;
+        let outline = spec.shape.outline();
+        let (mut lo, mut hi) = outline.bounds();
+        let fitted = spec.shape.fits_grid();
+        let core_x = core_cells(hi[0] - lo[0], h, fitted);
+        let core_y = if fitted {
+            core_cells(hi[1] - lo[1], h, true)
+        } else {
+            let (mid, half) = (0.5 * (lo[1] + hi[1]), 0.5 * (hi[1] - lo[1]));
+            let m = ((half / h) * (1.0 - 1e-12)).ceil().max(1.0);
+            (lo[1], hi[1]) = (mid - m * h, mid + m * h);
+            2 * m as usize
+        };
         let (nsx, nsy) = match spec.stretch {
             Stretch::GrowthCap(r) => (
                 intervals_for_growth(h, spec.extent_x, r),
@@ -195,17 +272,19 @@ impl Grid {
             ),
             Stretch::Intervals { nx, ny } => (nx, ny),
         };
-        let axis = |half: f64, n_core: usize, ext: f64, ns: usize| -> Vec<f64> {
+        let axis = |lo: f64, hi: f64, n_core: usize, ext: f64, ns: usize| -> Vec<f64> {
             let s = stretched_offsets(h, ext, ns);
-            let mut v: Vec<f64> = s.iter().rev().map(|o| -half - o).collect();
-            for k in 1..=n_core {
-                v.push(-half + k as f64 * h);
+            let step = (hi - lo) / n_core as f64;
+            let mut v: Vec<f64> = s.iter().rev().map(|o| lo - o).collect();
+            for k in 1..n_core {
+                v.push(lo + k as f64 * step);
             }
-            v.extend(s.iter().skip(1).map(|o| half + o));
+            v.push(hi);
+            v.extend(s.iter().skip(1).map(|o| hi + o));
             v
         };
-        let xn = axis(0.5, n, spec.extent_x, nsx);
-        let yn = axis(0.5 * thickness, n_thick, spec.extent_y, nsy);
+        let xn = axis(lo[0], hi[0], core_x, spec.extent_x, nsx);
+        let yn = axis(lo[1], hi[1], core_y, spec.extent_y, nsy);
         let nx = xn.len() - 1;
         let ny = yn.len() - 1;
         let centres = |v: &[f64]| {
@@ -219,15 +298,16 @@ impl Grid {
             nx,
             ny,
             h,
-            thickness,
+            thickness: spec.shape.thickness(),
+            body: Some(outline),
             xc: centres(&xn),
             yc: centres(&yn),
             dx: widths(&xn),
             dy: widths(&yn),
             i0: nsx,
-            i1: nsx + n,
+            i1: nsx + core_x,
             j0: nsy,
-            j1: nsy + n_thick,
+            j1: nsy + core_y,
             cx: stretch_coefficient(h, spec.extent_x, nsx),
             cy: stretch_coefficient(h, spec.extent_y, nsy),
             nsx,
@@ -237,16 +317,15 @@ impl Grid {
         })
     }
 
-    /// The same grid with no plate cells (for verification against exact solutions).
+    /// The same grid with no plate (for verification against exact solutions).
     pub fn without_plate(mut self) -> Grid {
-        self.i1 = self.i0;
-        self.j1 = self.j0;
+        self.body = None;
         self
     }
 
-    /// Whether the grid has plate cells.
+    /// Whether the grid has a plate.
     pub fn has_plate(&self) -> bool {
-        self.i1 > self.i0 && self.j1 > self.j0
+        self.body.is_some()
     }
 
     /// Number of cells.
@@ -254,18 +333,17 @@ impl Grid {
         self.nx * self.ny
     }
 
-    /// Whether cell (i, j) is inside the plate.
-    #[inline]
-    pub fn is_solid(&self, i: usize, j: usize) -> bool {
-        (self.i0..self.i1).contains(&i) && (self.j0..self.j1).contains(&j)
-    }
-
-    /// The solid mask, row-major with x fastest.
+    /// Whether each cell's centre lies inside the plate or on its boundary, row-major with x
+    /// fastest (for pictures; the solver's own classification is `flow::wall`).
     pub fn solid_mask(&self) -> Vec<bool> {
         let mut m = vec![false; self.cells()];
+        let Some(body) = &self.body else {
+            return m;
+        };
         for j in self.j0..self.j1 {
+            let covered = body.covered(LineDir::Horizontal, self.yc[j]);
             for i in self.i0..self.i1 {
-                m[i + self.nx * j] = true;
+                m[i + self.nx * j] = covered.holding(self.xc[i], 0.0).is_some();
             }
         }
         m

@@ -46,3 +46,4 @@ pub mod grid;
 pub mod sim;
 
 pub mod config;
+pub mod shape;

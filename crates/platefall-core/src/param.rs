@@ -4,6 +4,8 @@
 //! name into its flag (`cli::flags`), so the same check serves Rust callers and the CLI.
 use std::fmt;
 
+use crate::shape::ShapeError;
+
 /// An input quantity of a run (SPEC §2–§6), for error messages.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Param {
@@ -11,6 +13,12 @@ pub enum Param {
     Resolution,
     /// Plate thickness (chords).
     Thickness,
+    /// The plate's section (its kind).
+    Shape,
+    /// Edge radius of a rounded plate (chords).
+    EdgeRadius,
+    /// The vertices of a polygonal plate.
+    Polygon,
     /// Distance from the plate to the outer boundary along x (chords).
     ExtentX,
     /// Distance from the plate to the outer boundary along y (chords).
@@ -85,6 +93,9 @@ impl Param {
         match self {
             Param::Resolution => "resolution",
             Param::Thickness => "plate thickness (chords)",
+            Param::Shape => "plate shape",
+            Param::EdgeRadius => "edge radius (chords)",
+            Param::Polygon => "polygon",
             Param::ExtentX => "extent along x (chords)",
             Param::ExtentY => "extent along y (chords)",
             Param::Growth => "growth cap",
@@ -188,6 +199,24 @@ pub enum InputError {
         /// When it is needed.
         why: &'static str,
     },
+    /// The plate's section cannot be built (the error names the value and what is accepted).
+    #[error(transparent)]
+    Shape(#[from] ShapeError),
+    /// The plate is thinner somewhere than the grid can follow at this resolution.
+    #[error(
+        "the plate is thinner near ({x:.4}, {y:.4}) than the grid can follow at N = {resolution} \
+         (a grid face there would see fluid on both sides of it); {smallest}"
+    )]
+    TooThin {
+        /// The resolution asked for.
+        resolution: usize,
+        /// Where the grid first fails to follow the plate (chords, body axes).
+        x: f64,
+        /// See `x`.
+        y: f64,
+        /// What resolution works, in words.
+        smallest: String,
+    },
 }
 
 impl InputError {
@@ -199,6 +228,8 @@ impl InputError {
             }
             InputError::Missing { param, .. } => Some(*param),
             InputError::MissingPlate => None,
+            InputError::Shape(e) => Some(e.param()),
+            InputError::TooThin { .. } => Some(Param::Resolution),
         }
     }
 }

@@ -1,5 +1,6 @@
 //! Grid (SPEC §4): the seed's stretching figures, monotone spacing, growth within the cap.
 use platefall_core::grid::{stretch_coefficient, Grid, GridSpec, Stretch};
+use platefall_core::shape::Shape;
 
 #[test]
 fn seed_x_stretching_matches_the_dissertation() {
@@ -67,7 +68,7 @@ fn bad_grid_input_is_refused_with_the_range() {
     let e = Grid::new(&s).unwrap_err().to_string();
     assert!(e.contains("resolution 0") && e.contains("4..=1024"), "{e}");
     s = GridSpec::modern(32);
-    s.thickness = f64::NAN;
+    s.shape = Shape::rect(f64::NAN);
     assert!(Grid::new(&s).unwrap_err().to_string().contains("thickness"));
     s = GridSpec::modern(32);
     s.stretch = Stretch::GrowthCap(0.9);
@@ -75,4 +76,25 @@ fn bad_grid_input_is_refused_with_the_range() {
         .unwrap_err()
         .to_string()
         .contains("growth cap"));
+}
+
+#[test]
+fn a_plate_is_the_same_body_at_every_resolution() {
+    // t/c = 0.1 is not a whole number of cells at N = 32, 64 or 128 (3.2, 6.4, 12.8): the grid
+    // is fitted to the faces, so the plate is exactly 0.1 thick at each.
+    for n in [32, 64, 128] {
+        let mut spec = GridSpec::modern(n);
+        spec.shape = Shape::rect(0.1);
+        let g = Grid::new(&spec).unwrap();
+        let (top, bottom) = (g.yn[g.j1], g.yn[g.j0]);
+        assert!(
+            (top - bottom - 0.1).abs() < 1e-12,
+            "N = {n}: thickness {}",
+            top - bottom
+        );
+        assert!((top - 0.05).abs() < 1e-12 && (bottom + 0.05).abs() < 1e-12);
+        assert!((g.xn[g.i1] - 0.5).abs() < 1e-12 && (g.xn[g.i0] + 0.5).abs() < 1e-12);
+        // Outside the plate the first cells are h, as on every grid.
+        assert!((g.dy[g.j1] - 1.0 / n as f64).abs() < 1e-12);
+    }
 }

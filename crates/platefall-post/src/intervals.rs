@@ -661,6 +661,7 @@ mod tests {
             samples: samples.into_iter().collect(),
             t_release: 0.0,
             cells: 1,
+            recirculation_length: None,
         }
     }
 

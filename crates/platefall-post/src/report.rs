@@ -107,6 +107,11 @@ fn static_part(alpha: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
     r.push_str(&format!(
         "Strouhal: {chord} on the chord, {width} on the projected width\n"
     ));
+    if let Some(l) = sum.recirculation_length {
+        r.push_str(&format!(
+            "recirculation length behind the plate at the end: {l:.3} c\n"
+        ));
+    }
     let mut table = Vec::new();
     if (alpha - 0.4).abs() < 0.05 {
         table.push(row("Strouhal (chord / width)", strouhal, "0.34 / 0.13"));

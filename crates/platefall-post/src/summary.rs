@@ -43,6 +43,9 @@ pub struct Summary {
     /// Dominant lift frequency × c/U, and × projected width c|sin α| / U (static case); null when steady.
     pub strouhal_chord: Option<f64>,
     pub strouhal_width: Option<f64>,
+    /// Static case: the reversed-flow length behind the plate at the end of the run, from its rear
+    /// boundary along the relative free stream (chords; the cylinder's L/D).
+    pub recirculation_length: Option<f64>,
     // Coupled and forced cases.
     pub mean_speed: Option<f64>,
     pub mean_omega: Option<f64>,
@@ -244,6 +247,11 @@ fn set_coefficients(
     }
 }
 
+/// The keys measured on the final flow field.
+fn set_final_field(sum: &mut Summary, rec: &RunRecord) {
+    sum.recirculation_length = rec.recirculation_length;
+}
+
 /// The keys of a moving plate (forced, pinned, free) over the developed window `w`.
 fn set_motion(sum: &mut Summary, config: &RunConfig, rec: &RunRecord, w: Option<TimeWindow>) {
     let (h, s) = (&rec.samples, &rec.samples[..]);
@@ -361,6 +369,7 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         max_cd: None,
         strouhal_chord: None,
         strouhal_width: None,
+        recirculation_length: None,
         mean_speed: None,
         mean_omega: None,
         mean_gamma: None,
@@ -376,6 +385,7 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
         ci: IntervalKeys::default(),
     };
     set_coefficients(&mut sum, config, h, w, freq);
+    set_final_field(&mut sum, rec);
     if !matches!(config.case, Case::Static { .. }) {
         set_motion(&mut sum, config, rec, w);
     }

@@ -20,6 +20,7 @@ fn the_summary_from_a_thinned_history_agrees_with_the_full_one() {
         samples: thin,
         t_release: rec.t_release,
         cells: rec.cells,
+        recirculation_length: rec.recirculation_length,
     };
     let sum = summarize(&cfg, &thinned, 0.0);
     assert_eq!(sum.steps, full.steps);

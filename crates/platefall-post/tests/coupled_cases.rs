@@ -1,4 +1,5 @@
-//! Cases B–D (SPEC §1, §6, §8) at the seed's resolution N = 16: short CI runs.
+//! Cases B–D (SPEC §1, §6, §8) at the seed's resolution N = 16 around the seed's plate (one cell,
+//! 1/16 thick): short CI runs.
 mod common;
 use platefall_core::config::{Plate, RunBuilder};
 use platefall_core::sim::RunRecord;
@@ -19,6 +20,7 @@ fn forced_rotation_lift_is_periodic_at_the_forced_rate() {
     let config = RunBuilder::forced(2.0)
         .spinup(1.0)
         .resolution(16)
+        .thickness(0.0625)
         .t_end(12.0);
     let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
@@ -43,6 +45,7 @@ fn pinned_card_reaches_sustained_autorotation() {
     // whole turns after the first must lie in [1.0, 2.5] (seed 1.58).
     let config = RunBuilder::pinned(Plate::card())
         .resolution(16)
+        .thickness(0.0625)
         .t_end(40.0)
         .turns(2.2);
     let (_, rec, s) = common::run(config.build().unwrap());
@@ -59,6 +62,7 @@ fn pinned_card_reaches_sustained_autorotation() {
 fn free_card_autorotates_while_falling() {
     let config = RunBuilder::free(Plate::card())
         .resolution(16)
+        .thickness(0.0625)
         .t_end(40.0)
         .turns(2.2);
     let (_, rec, s) = common::run(config.build().unwrap());

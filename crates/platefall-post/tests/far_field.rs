@@ -5,6 +5,7 @@ use std::f64::consts::PI;
 
 use platefall_core::flow::{FlowParams, FlowSolver, Frame, OuterBc};
 use platefall_core::grid::{Grid, GridSpec, Stretch};
+use platefall_core::shape::Shape;
 
 /// A Lamb–Oseen vortex at rest in the inertial frame: circulation Γ, core σ² = r_c² + 4νt,
 /// vorticity Γ/(πσ²) exp(−r²/σ²), azimuthal velocity Γ/(2πr)(1 − exp(−r²/σ²)). Seen from a grid
@@ -84,7 +85,7 @@ fn half_a_turn(dt: f64) -> (f64, f64, u64, f64) {
     };
     let spec = GridSpec {
         resolution: 16,
-        thickness: 1.0 / 16.0,
+        shape: Shape::rect(1.0 / 16.0),
         extent_x: 12.0,
         extent_y: 12.0,
         stretch: Stretch::GrowthCap(1.03),

@@ -1,4 +1,5 @@
-//! Case A, the static plate (SPEC §1, §5, §8) at the seed's resolution N = 16, Re = 5000.
+//! Case A, the static plate (SPEC §1, §5, §8) at the seed's resolution N = 16 around the seed's plate
+//! (a rectangle 1/16 thick), Re = 5000.
 mod common;
 use platefall_core::config::RunBuilder;
 use platefall_core::sim::RunStatus;
@@ -9,6 +10,7 @@ fn normal_plate_sheds_an_asymmetric_wake() {
     // break symmetry and shed: C_L oscillates with amplitude > 0.1 over the developed part.
     let config = RunBuilder::static_plate(std::f64::consts::FRAC_PI_2)
         .resolution(16)
+        .thickness(0.0625)
         .t_end(60.0);
     let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);

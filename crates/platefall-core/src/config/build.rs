@@ -19,21 +19,24 @@
 //! three turns at most 200, pinned 60, free 80), the Reynolds number (5000, or the plate's), the
 //! far-field scheme (explicit for a static plate, implicit for a turning one), the development
 //! time (5, or 0 for a plate starting from rest), a free fall's launch speed (1, or 0 for a plate
-//! described physically) and turn limit (10), and the grid's plate thickness (one cell, or a
-//! physical plate's own).
+//! described physically) and turn limit (10), and the plate's section (a rectangle 1/64 thick, or
+//! a physical plate's own thickness; a physical plate's m*, m_f* and I* are then its section's).
 use std::f64::consts::PI;
 
 use super::plate::Plate;
-use crate::body::{AbStart, Coupling};
+use crate::body::{AbStart, Coupling, PlateProps};
 use crate::flow::{FarFieldScheme, FlowParams};
 use crate::grid::{GridSpec, Stretch};
 use crate::param::{InputError, Param};
+use crate::shape::Shape;
 use crate::sim::{BodyConfig, Case, RunConfig, TimeControl, ValidatedConfig};
 
 /// The defaults of every option (the command line shows them in its help).
 pub mod defaults {
     /// Cells per chord N.
     pub const RESOLUTION: usize = 64;
+    /// The thickness t/c of the default section, a rectangle (exact at every resolution).
+    pub const THICKNESS: f64 = 1.0 / 64.0;
     /// Distance from the plate to the outer boundary (chords).
     pub const EXTENT: f64 = 15.0;
     /// Cap on the ratio of neighbouring cell sizes.
@@ -83,16 +86,25 @@ pub mod defaults {
 /// How the grid is given.
 #[derive(Clone, Debug, PartialEq)]
 enum GridChoice {
-    /// The modern stretched grid ([`GridSpec::modern`]) with these settings; thickness `None`:
-    /// one cell, or the physical plate's.
+    /// The modern stretched grid ([`GridSpec::modern`]) with these settings; section `None`:
+    /// a rectangle of the physical plate's thickness, or [`defaults::THICKNESS`].
     Modern {
         resolution: usize,
-        thickness: Option<f64>,
+        section: Option<Section>,
         extent: f64,
         growth: f64,
     },
-    /// The seed's exact grid ([`GridSpec::seed`]).
+    /// The seed's exact grid and plate ([`GridSpec::seed`]).
     Seed,
+}
+
+/// The plate's section, as given.
+#[derive(Clone, Debug, PartialEq)]
+enum Section {
+    /// A rectangle of this thickness.
+    Thickness(f64),
+    /// Any section.
+    Shape(Shape),
 }
 
 /// The options every case has.
@@ -114,7 +126,7 @@ impl Default for Options {
         Options {
             grid: GridChoice::Modern {
                 resolution: defaults::RESOLUTION,
-                thickness: None,
+                section: None,
                 extent: defaults::EXTENT,
                 growth: defaults::GROWTH,
             },
@@ -442,7 +454,7 @@ impl<C> RunBuilder<C> {
         } else {
             self.options.grid = GridChoice::Modern {
                 resolution,
-                thickness: None,
+                section: None,
                 extent: defaults::EXTENT,
                 growth: defaults::GROWTH,
             };
@@ -450,11 +462,20 @@ impl<C> RunBuilder<C> {
         self
     }
 
-    /// The plate's thickness on the grid, as a chord fraction [default: one cell, or a physical
-    /// plate's own].
+    /// A rectangular section of this thickness t/c, exact at every resolution [default: 1/64, or
+    /// a physical plate's own].
     pub fn thickness(mut self, thickness: f64) -> Self {
-        if let GridChoice::Modern { thickness: t, .. } = &mut self.options.grid {
-            *t = Some(thickness);
+        if let GridChoice::Modern { section, .. } = &mut self.options.grid {
+            *section = Some(Section::Thickness(thickness));
+        }
+        self
+    }
+
+    /// The plate's section (rectangle, rounded, ellipse, NACA, polygon) [default: a rectangle
+    /// 1/64 thick, or of a physical plate's thickness].
+    pub fn shape(mut self, shape: Shape) -> Self {
+        if let GridChoice::Modern { section, .. } = &mut self.options.grid {
+            *section = Some(Section::Shape(shape));
         }
         self
     }
@@ -475,8 +496,8 @@ impl<C> RunBuilder<C> {
         self
     }
 
-    /// The seed's exact grid (N = 16, 24 × 27 stretched intervals over 10 chords), instead of
-    /// the resolution, thickness, extent and growth cap.
+    /// The seed's exact grid and plate (N = 16, a rectangle 1/16 thick, 24 × 27 stretched
+    /// intervals over 10 chords), instead of the resolution, section, extent and growth cap.
     pub fn seed_grid(mut self) -> Self {
         self.options.grid = GridChoice::Seed;
         self
@@ -545,18 +566,29 @@ impl Options {
                 why: "for a plate without a preset or physical description",
             })?;
         let thickness = body.plate.thickness();
-        self.config(
+        let modern = matches!(self.grid, GridChoice::Modern { .. });
+        let mut config = self.config(
             case,
             re,
             default_t_end,
             Some(body.config()),
             body.turns,
             thickness,
-        )
-        .validate()
+        );
+        // A physical plate's mass, buoyancy and inertia are those of its section (the seed's grid
+        // keeps the plate's own rectangle).
+        let strip = body.plate.physical_strip().filter(|_| modern);
+        if let (Some(strip), Some(b)) = (strip, config.body.as_mut()) {
+            config.grid.shape.validate()?;
+            b.props = PlateProps {
+                torque: b.props.torque,
+                ..strip.props_of(&config.grid.shape)
+            };
+        }
+        config.validate()
     }
 
-    /// The description; `plate_thickness` replaces the grid's default one.
+    /// The description; `plate_thickness` is the default section's thickness.
     fn config(
         self,
         case: Case,
@@ -566,31 +598,25 @@ impl Options {
         turns: Option<f64>,
         plate_thickness: Option<f64>,
     ) -> RunConfig {
-        let mut grid = match self.grid {
+        let grid = match self.grid {
             GridChoice::Seed => GridSpec::seed(),
             GridChoice::Modern {
                 resolution,
-                thickness,
+                section,
                 extent,
                 growth,
             } => GridSpec {
                 resolution,
-                thickness: thickness.unwrap_or(1.0 / resolution.max(1) as f64),
+                shape: match section {
+                    Some(Section::Shape(shape)) => shape,
+                    Some(Section::Thickness(t)) => Shape::rect(t),
+                    None => Shape::rect(plate_thickness.unwrap_or(defaults::THICKNESS)),
+                },
                 extent_x: extent,
                 extent_y: extent,
                 stretch: Stretch::GrowthCap(growth),
             },
         };
-        let given_thickness = matches!(
-            self.grid,
-            GridChoice::Modern {
-                thickness: Some(_),
-                ..
-            }
-        );
-        if let (false, Some(t)) = (given_thickness, plate_thickness) {
-            grid.thickness = t;
-        }
         let far_field = self.far_field.unwrap_or(match case {
             Case::Static { .. } => FarFieldScheme::Explicit,
             _ => FarFieldScheme::Implicit,
@@ -658,7 +684,7 @@ mod tests {
             .build()
             .unwrap();
         assert!(matches!(run.case, Case::Free { v0, develop, .. } if v0 == 0.0 && develop == 0.0));
-        assert_eq!(run.grid.thickness, 0.05);
+        assert_eq!(run.grid.shape, Shape::rect(0.05));
         assert!((run.flow.re - 911.0).abs() < 1.0);
         assert_eq!(
             run.title(),
@@ -669,7 +695,7 @@ mod tests {
             .thickness(1.0 / 16.0)
             .build()
             .unwrap();
-        assert_eq!(thin.grid.thickness, 1.0 / 16.0);
+        assert_eq!(thin.grid.shape, Shape::rect(1.0 / 16.0));
     }
 
     #[test]

@@ -1,6 +1,7 @@
 //! The plate of a coupled run (pinned, free): its non-dimensional properties (SPEC §2), where they
 //! come from, and what else they imply for the run: a Reynolds number, physical scales for
-//! reports and, for a plate described physically, its thickness in chords.
+//! reports and, for a plate described physically, the strip itself (its thickness in chords, and
+//! its mass and inertia for any section).
 use super::preset::PhysicalPlate;
 use super::strip::Strip;
 use crate::body::PlateProps;
@@ -31,7 +32,7 @@ pub struct Plate {
     props: PlateProps,
     reynolds: Option<f64>,
     scales: Option<ReferenceScales>,
-    thickness: Option<f64>,
+    strip: Option<Strip>,
 }
 
 impl Plate {
@@ -44,7 +45,7 @@ impl Plate {
             props: card.props(),
             reynolds: Some(card.reynolds()),
             scales: Some(card.scales()),
-            thickness: None,
+            strip: None,
         }
     }
 
@@ -56,12 +57,13 @@ impl Plate {
             props: PlateProps::new(mass, inertia, gravity),
             reynolds: None,
             scales: None,
-            thickness: None,
+            strip: None,
         }
     }
 
     /// A plate described physically ([`Strip`], validated here): m*, I*, g*, m_f* and Re are
-    /// derived from it, and the grid draws its thickness unless the run gives one.
+    /// derived from it (for the run's section: [`Strip::props_of`]), and the section has its
+    /// thickness unless the run gives one.
     pub fn strip(strip: &Strip) -> Result<Plate, InputError> {
         strip.validate()?;
         Ok(Plate {
@@ -69,7 +71,7 @@ impl Plate {
             props: strip.props(),
             reynolds: Some(strip.reynolds()),
             scales: Some(strip.scales()),
-            thickness: Some(strip.aspect()),
+            strip: Some(strip.clone()),
         })
     }
 
@@ -125,7 +127,12 @@ impl Plate {
 
     /// The thickness in chords of a plate described physically.
     pub fn thickness(&self) -> Option<f64> {
-        self.thickness
+        self.strip.as_ref().map(Strip::aspect)
+    }
+
+    /// The strip of a plate described physically.
+    pub fn physical_strip(&self) -> Option<&Strip> {
+        self.strip.as_ref()
     }
 
     /// Whether the plate is described physically.

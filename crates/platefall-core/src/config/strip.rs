@@ -14,6 +14,7 @@
 use super::fluid::Fluid;
 use crate::body::PlateProps;
 use crate::param::{check_range, rounded, InputError, Param};
+use crate::shape::Shape;
 use crate::sim::ReferenceScales;
 
 /// A physical plate in a physical fluid (SI units).
@@ -57,17 +58,29 @@ impl Strip {
         self.speed_scale() * self.chord / self.fluid.viscosity
     }
 
-    /// m*, I*, g*, m_f* (no applied moment).
+    /// m*, I*, g*, m_f* (no applied moment) of a rectangular strip.
     pub fn props(&self) -> PlateProps {
-        let mass = self.density_ratio() * self.aspect();
+        self.props_of(&Shape::rect(self.aspect()))
+    }
+
+    /// m*, I*, g*, m_f* of a strip of this section (thickness t/c): m_f* is the section's area
+    /// A/c², m* = (ρs/ρf) m_f*, I* = (ρs/ρf) J/c⁴ with J its polar moment about the centroid.
+    pub fn props_of(&self, shape: &Shape) -> PlateProps {
+        let r = self.density_ratio();
+        let (area, inertia) = match shape {
+            // m*(1 + (t/c)²)/12, the rectangle's I* in this order of operations.
+            Shape::Rect { thickness } => {
+                (*thickness, r * thickness * (1.0 + thickness.powi(2)) / 12.0)
+            }
+            _ => {
+                let (area, polar) = shape.area_moments();
+                (area, r * polar)
+            }
+        };
         let u = self.speed_scale();
         PlateProps {
-            displaced: self.aspect(),
-            ..PlateProps::new(
-                mass,
-                mass * (1.0 + self.aspect().powi(2)) / 12.0,
-                self.gravity * self.chord / (u * u),
-            )
+            displaced: area,
+            ..PlateProps::new(r * area, inertia, self.gravity * self.chord / (u * u))
         }
     }
 
@@ -87,14 +100,14 @@ impl Strip {
         check_range(Param::FluidDensity, self.fluid.density, 0.0, 1e5, true)?;
         check_range(Param::Viscosity, self.fluid.viscosity * 1e6, 0.0, 1e6, true)?;
         check_range(Param::GravityAccel, self.gravity, 0.0, 1e3, true)?;
-        if self.aspect() > 0.5 {
+        if self.aspect() > 1.0 {
             return Err(InputError::Inconsistent {
                 param: Param::PlateThickness,
                 value: self.thickness * 1e3,
                 why: format!(
-                    "a plate thicker than half its width ({:.4} mm) is not thin; accepted (0, {}]",
+                    "the thickness is at most the width ({:.4} mm); accepted (0, {}]",
                     self.chord * 1e3,
-                    0.5 * self.chord * 1e3
+                    self.chord * 1e3
                 ),
             });
         }
@@ -227,7 +240,7 @@ mod tests {
         assert!((p.inertia - p.mass * 1.0025 / 12.0).abs() < 1e-15);
         assert!(s.validate().is_ok());
         let thick = Strip {
-            thickness: 0.006,
+            thickness: 0.012,
             ..s
         };
         assert_eq!(

@@ -18,7 +18,7 @@
 //! Δt·|S|/(m + m_added) < 1 — violated by very light plates at low Re.
 use super::array::Padded;
 use super::frame::Frame;
-use super::plate::{self, BodyAxesLoads};
+use super::plate::BodyAxesLoads;
 use super::FlowSolver;
 
 /// K and S of the module docs: `k[row][col]`, rows (F_x, F_y, M) in body axes on ρU²c and ρU²c²,
@@ -110,13 +110,18 @@ impl FlowSolver {
         let mut u = Padded::zeros(nx + 1, ny);
         let mut v = Padded::zeros(nx, ny + 1);
         let mut p = vec![0.0; nx * ny];
-        plate::set_plate_faces(&mut u, &mut v, &self.grid, &self.metrics, unit);
+        // The step's answer to a change of motion alone: the covered parts of the faces take the
+        // new motion, while the no-slip values next to the wall follow the motion extrapolated
+        // from before the step (here: rest).
+        let rest = Frame::default();
+        self.wall.impose(&mut u, &mut v, unit, &rest);
+        let (g, m, wall) = (&self.grid, &self.metrics, &self.wall);
         self.pressure
-            .project(&mut u, &mut v, &self.grid, &self.metrics, 1.0, &mut p);
-        let (g, m) = (&self.grid, &self.metrics);
+            .project(&mut u, &mut v, g, m, (wall, unit), 1.0, &mut p);
+        wall.hold(&mut u, &mut v, unit, &rest);
         (
-            plate::loads(&u, &v, &p, g, m, unit, f64::INFINITY),
-            plate::loads(&u, &v, &p, g, m, unit, re),
+            wall.loads(&u, &v, &p, unit, f64::INFINITY),
+            wall.loads(&u, &v, &p, unit, re),
         )
     }
 }

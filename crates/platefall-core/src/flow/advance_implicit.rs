@@ -5,7 +5,7 @@ use super::boundary::Outflow;
 use super::implicit::{self, GhostEnds, Inputs, Part, State, Weights};
 use super::metrics::Component;
 use super::pressure::PressureUpdate;
-use super::{plate, FlowSolver, Frame, OuterBc};
+use super::{FlowSolver, Frame, OuterBc};
 
 impl FlowSolver {
     /// The predictor of the implicit far field (see `implicit/mod.rs`): the right-hand side, the
@@ -57,8 +57,13 @@ impl FlowSolver {
     /// factorisation error back into the next predictor through the pressure, which diverges
     /// where both directions are implicit at Courant numbers ≳ 1; with A it cancels.
     pub(super) fn project_incremental(&mut self, dt: f64) {
-        self.pressure
-            .project_velocity(&mut self.u, &mut self.v, &self.grid, &self.metrics);
+        self.pressure.project_velocity(
+            &mut self.u,
+            &mut self.v,
+            &self.grid,
+            &self.metrics,
+            (&self.wall, &self.frame),
+        );
         if let Some(state) = &mut self.implicit {
             let t = state.g2 * dt;
             implicit::factored_potential(
@@ -121,14 +126,8 @@ impl FlowSolver {
         state.u.total_rhs(&xu);
         state.v.total_rhs(&xv);
         let zero = Frame::default();
-        plate::set_plate_faces(
-            &mut state.u.d,
-            &mut state.v.d,
-            &self.grid,
-            &self.metrics,
-            &zero,
-        );
+        self.wall.hold(&mut state.u.d, &mut state.v.d, &zero, &zero);
         self.pressure
-            .potential(&state.u.d, &state.v.d, &self.grid, &mut self.p);
+            .potential(&state.u.d, &state.v.d, &self.grid, &self.wall, &mut self.p);
     }
 }

@@ -24,6 +24,20 @@ impl Frame {
     pub fn gy(&self, x: f64) -> f64 {
         self.v0 + self.omega * x
     }
+    /// The motion a step of `dt` after this one, extrapolated linearly from this one and
+    /// `before`, a step of `dt_before` earlier (this one when there is no step before).
+    pub fn extrapolated(&self, before: &Frame, dt: f64, dt_before: f64) -> Frame {
+        if dt_before <= 0.0 {
+            return *self;
+        }
+        let r = dt / dt_before;
+        Frame {
+            u0: self.u0 + r * (self.u0 - before.u0),
+            v0: self.v0 + r * (self.v0 - before.v0),
+            omega: self.omega + r * (self.omega - before.omega),
+        }
+    }
+
     /// Speed of the centre, |(u0, v0)|.
     pub fn speed(&self) -> f64 {
         self.u0.hypot(self.v0)

@@ -36,6 +36,11 @@ mod plate;
 mod pressure;
 mod split_cholesky;
 mod transport;
+mod wake;
+// The wall treatment is documented in its module; its public items are reached through
+// `FlowSolver::wall`.
+#[allow(missing_docs)]
+pub mod wall;
 mod zones;
 
 pub use added_mass::AddedMass;
@@ -51,6 +56,7 @@ use implicit::State;
 use metrics::Component;
 use momentum::RhsContext;
 use pressure::Pressure;
+use wall::Wall;
 use zones::Zones;
 
 use crate::grid::Grid;
@@ -184,7 +190,8 @@ pub struct FlowSolver {
     pressure: Pressure,
     outer: OuterBc,
     forcing: Option<ForceFn>,
-    wall: plate::WallFaces,
+    /// The plate in the grid: held faces, near-wall stencils, load samples.
+    wall: Wall,
     /// The lines with implicit grid transport (none in the explicit scheme) and their workspaces.
     zones: Zones,
     implicit: Option<Box<State>>,
@@ -193,6 +200,9 @@ pub struct FlowSolver {
     /// Motion of the plate at the previous time level (`frame` before the first step); with
     /// `dt_prev` it gives the change of motion the last projection answered ([`AddedMass`]).
     pub(crate) frame_prev: Frame,
+    /// The motion at the new time level extrapolated from the two before (the no-slip values
+    /// next to the wall follow it, `wall::Wall::impose`).
+    guess: Frame,
     /// Current time and the last step taken (0 before the first step).
     pub(crate) t: f64,
     pub(crate) dt_prev: f64,
@@ -213,10 +223,11 @@ impl FlowSolver {
         frame: Frame,
     ) -> Result<Self, FlowError> {
         let metrics = Metrics::new(&grid);
-        let pressure = Pressure::new(&grid, &metrics)
-            .map_err(|e| FlowError::Setup(SetupError::Pressure { reason: e.0 }))?;
         let nu = 1.0 / params.re;
-        let wall = plate::wall_faces(&grid, &metrics, nu);
+        let wall = Wall::new(&grid, &metrics, nu);
+        let pressure =
+            Pressure::new(&grid, &metrics, &wall.faces)
+                .map_err(|e| FlowError::Setup(SetupError::Pressure { reason: e.0 }))?;
         let min_dx = grid.dx.iter().copied().fold(f64::INFINITY, f64::min);
         let min_dy = grid.dy.iter().copied().fold(f64::INFINITY, f64::min);
         let dt_visc =
@@ -239,6 +250,7 @@ impl FlowSolver {
             implicit,
             frame,
             frame_prev: frame,
+            guess: frame,
             t: 0.0,
             dt_prev: 0.0,
             steps: 0,
@@ -292,14 +304,8 @@ impl FlowSolver {
         };
         let stats = momentum::explicit_rhs(&self.u, &self.v, context, &mut self.hu, &mut self.hv);
         self.convective_rate = stats.convective_rate;
-        self.wall.apply(
-            &self.u,
-            &self.v,
-            &self.metrics,
-            &self.frame,
-            &mut self.hu,
-            &mut self.hv,
-        );
+        self.wall
+            .apply(&self.u, &self.v, &self.frame, &mut self.hu, &mut self.hv);
         if let Some(f) = &self.forcing {
             add_forcing(f, &self.metrics, self.t, &mut self.hu, &mut self.hv);
         }
@@ -332,6 +338,7 @@ impl FlowSolver {
         );
         self.prepared = false;
         let t_next = self.t + dt;
+        self.guess = self.frame.extrapolated(&self.frame_prev, dt, self.dt_prev);
         self.frame_prev = self.frame;
         if self.implicit.is_some() {
             self.predict_implicit(dt, next);
@@ -346,10 +353,13 @@ impl FlowSolver {
                 &mut self.v,
                 &self.grid,
                 &self.metrics,
+                (&self.wall, &self.frame),
                 dt,
                 &mut self.p,
             );
         }
+        self.wall
+            .hold(&mut self.u, &mut self.v, &self.frame, &self.guess);
         self.t = t_next;
         self.dt_prev = dt;
         self.steps += 1;
@@ -396,15 +406,9 @@ impl FlowSolver {
 
     /// The loads on the plate after a projection; an error if they are not finite.
     fn update_loads(&mut self) -> Result<(), FlowError> {
-        self.loads = plate::loads(
-            &self.u,
-            &self.v,
-            &self.p,
-            &self.grid,
-            &self.metrics,
-            &self.frame,
-            self.params.re,
-        );
+        self.loads = self
+            .wall
+            .loads(&self.u, &self.v, &self.p, &self.frame, self.params.re);
         let l = &self.loads;
         if !(l.fx.is_finite() && l.fy.is_finite() && l.moment.is_finite()) {
             return Err(self.diverged("the force on the plate is not finite"));
@@ -412,15 +416,11 @@ impl FlowSolver {
         Ok(())
     }
 
-    /// No-slip: the faces on and inside the plate take the grid-point velocity g of this frame.
+    /// No-slip: the held faces take the grid-point velocity g of this frame, the forced points
+    /// their values between the wall and the fluid (`wall::stencils`).
     pub(super) fn impose_plate(&mut self) {
-        plate::set_plate_faces(
-            &mut self.u,
-            &mut self.v,
-            &self.grid,
-            &self.metrics,
-            &self.frame,
-        );
+        self.wall
+            .impose(&mut self.u, &mut self.v, &self.frame, &self.guess);
     }
 
     fn diverged(&self, reason: &str) -> FlowError {
@@ -497,19 +497,27 @@ impl FlowSolver {
         self.steps
     }
 
-    /// Largest |∇·u| over the fluid cells (flux divided by cell area).
+    /// Largest |∇·u| over the pressure cells (the fluid's outflow divided by the cell's area).
     pub fn max_divergence(&self) -> f64 {
         let g = &self.grid;
-        let mut m: f64 = 0.0;
-        for j in 0..g.ny {
-            for i in 0..g.nx {
-                if !g.is_solid(i, j) {
-                    let d = Pressure::cell_flux(&self.u, &self.v, g, i, j) / (g.dx[i] * g.dy[j]);
-                    m = m.max(d.abs());
-                }
-            }
-        }
-        m
+        let fluid = &self.wall.faces.fluid;
+        let mut flux: Vec<f64> = (0..g.cells())
+            .map(|k| {
+                let (i, j) = (k % g.nx, k / g.nx);
+                Pressure::cell_flux(&self.u, &self.v, g, i, j)
+            })
+            .collect();
+        self.wall
+            .cut_flux(&self.u, &self.v, &self.frame, &mut |k, add| flux[k] += add);
+        (0..g.cells())
+            .filter(|&k| fluid[k])
+            .map(|k| (flux[k] / (g.dx[k % g.nx] * g.dy[k / g.nx])).abs())
+            .fold(0.0, f64::max)
+    }
+
+    /// The plate's description in the grid (faces, near-wall stencils, load samples).
+    pub fn wall(&self) -> &Wall {
+        &self.wall
     }
 
     /// Largest |u|, |v| over all faces.

@@ -1,8 +1,10 @@
 //! The pressure projection (SPEC §3: u_x + v_y = 0).
 //!
-//! With the predicted velocity u*, find φ with  Σ_faces A_f ∂φ/∂n = Σ_faces A_f u*·n  in every fluid
-//! cell, then u = u* − ∇φ and p = φ/Δt. Faces on the outer boundary and on the plate carry prescribed
-//! normal velocities, so ∂φ/∂n = 0 there (Neumann). The operator is the same at every step because
+//! With the predicted velocity u*, find φ with  Σ_faces L_f A_f ∂φ/∂n = (the cell's outflow of u*)
+//! in every cell that carries a pressure, then u = u* − ∇φ on the fluid faces and p = φ/Δt
+//! (A_f: the face's open fraction, `wall::faces`; the outflow counts the part of a cut face
+//! inside the plate with the plate's velocity). Faces on the outer boundary and the plate's held
+//! faces carry prescribed normal velocities, so ∂φ/∂n = 0 there (Neumann). The operator is the same at every step because
 //! the grid is rigid; it is factored once by a sparse Cholesky whose order splits the grid at its
 //! middle column, so that both halves are solved at once (`split_cholesky.rs`). The Neumann null
 //! space is removed by pinning φ = 0 in one far-field corner cell; the right-hand side is made
@@ -11,8 +13,11 @@
 use faer::sparse::{SparseColMat, Triplet};
 
 use super::array::Padded;
+use super::frame::Frame;
 use super::metrics::Metrics;
 use super::split_cholesky::{Part, SplitCholesky};
+use super::wall::faces::Faces;
+use super::wall::Wall;
 use crate::grid::Grid;
 
 const NONE: u32 = u32::MAX;
@@ -46,11 +51,9 @@ pub enum PressureUpdate {
 
 impl Pressure {
     /// Assembles and factors −∇² with the Neumann conditions described above.
-    pub fn new(grid: &Grid, m: &Metrics) -> Result<Self, PressureError> {
+    pub fn new(grid: &Grid, m: &Metrics, faces: &Faces) -> Result<Self, PressureError> {
         let (nx, ny) = (grid.nx, grid.ny);
-        let fluid: Vec<bool> = (0..nx * ny)
-            .map(|k| !grid.is_solid(k % nx, k / nx))
-            .collect();
+        let fluid = faces.fluid.clone();
         let mut unknown = vec![NONE; nx * ny];
         let mut count = 0u32;
         // Cell 0 (a far-field corner) is pinned.
@@ -60,7 +63,7 @@ impl Pressure {
                 count += 1;
             }
         }
-        let a = assemble(grid, m, &fluid, &unknown, count as usize)?;
+        let a = assemble(grid, m, faces, &unknown, count as usize)?;
         let mut part = vec![Part::Separator; count as usize];
         for (k, &r) in unknown.iter().enumerate().filter(|(_, &r)| r != NONE) {
             part[r as usize] = Part::of_column(k % nx, nx / 2);
@@ -99,7 +102,8 @@ impl Pressure {
     }
 
     /// Projects (u, v) onto the discretely divergence-free space, in place, and sets p = φ/Δt.
-    /// Only faces between two fluid cells change.
+    /// Only faces between two pressure cells change (the caller restores held faces); `plate`
+    /// is the plate's motion, whose velocity the covered parts of cut faces carry.
     #[allow(clippy::too_many_arguments)]
     pub fn project(
         &mut self,
@@ -107,17 +111,25 @@ impl Pressure {
         v: &mut Padded,
         grid: &Grid,
         m: &Metrics,
+        (wall, plate): (&Wall, &Frame),
         dt: f64,
         p: &mut [f64],
     ) {
-        self.project_velocity(u, v, grid, m);
+        self.project_velocity(u, v, grid, m, (wall, plate));
         self.set_pressure(dt, p, PressureUpdate::Replace);
     }
 
     /// Projects (u, v) in place and keeps the potential φ in [`Pressure::phi`] (where the caller
     /// may transform it before [`Pressure::set_pressure`]).
-    pub fn project_velocity(&mut self, u: &mut Padded, v: &mut Padded, grid: &Grid, m: &Metrics) {
-        self.solve_phi(u, v, grid);
+    pub fn project_velocity(
+        &mut self,
+        u: &mut Padded,
+        v: &mut Padded,
+        grid: &Grid,
+        m: &Metrics,
+        (wall, plate): (&Wall, &Frame),
+    ) {
+        self.solve_phi(u, v, grid, wall, plate);
         self.correct_velocity(u, v, m);
     }
 
@@ -129,13 +141,13 @@ impl Pressure {
     /// The potential of the gradient part of a field f given on the faces (zero on the outer and
     /// plate faces): p with ∇·(f − ∇p) = 0 in every fluid cell, p → 0 on the outer ring. Starts
     /// the incremental pressure of the implicit far field.
-    pub fn potential(&mut self, fu: &Padded, fv: &Padded, grid: &Grid, p: &mut [f64]) {
-        self.solve_phi(fu, fv, grid);
+    pub fn potential(&mut self, fu: &Padded, fv: &Padded, grid: &Grid, wall: &Wall, p: &mut [f64]) {
+        self.solve_phi(fu, fv, grid, wall, &Frame::default());
         self.pressure_from_phi(1.0, p, PressureUpdate::Replace);
     }
 
     /// Solves (−L) φ = −div u* and scatters φ onto the cells (0 on plate and pinned cells).
-    fn solve_phi(&mut self, u: &Padded, v: &Padded, grid: &Grid) {
+    fn solve_phi(&mut self, u: &Padded, v: &Padded, grid: &Grid, wall: &Wall, plate: &Frame) {
         let (nx, ny) = (self.nx, self.ny);
         for j in 0..ny {
             for i in 0..nx {
@@ -145,6 +157,12 @@ impl Pressure {
                 }
             }
         }
+        let (unknown, rhs) = (&self.unknown, &mut self.rhs);
+        wall.cut_flux(u, v, plate, &mut |k, add| {
+            if unknown[k] != NONE {
+                rhs[unknown[k] as usize] -= add;
+            }
+        });
         self.factor.solve_in_place(&mut self.rhs);
         for (k, phi) in self.phi.iter_mut().enumerate() {
             let r = self.unknown[k];
@@ -206,15 +224,16 @@ impl Pressure {
     }
 }
 
-/// The lower triangle of −∇² over the fluid cells: each pair of fluid cells sharing a face is
-/// coupled with A_f / d; faces to the plate or outside carry no flux (Neumann).
+/// The lower triangle of −∇² over the pressure cells: the two cells of each fluid face are
+/// coupled with L_f A_f / d; held faces and the outer boundary carry no flux (Neumann).
 fn assemble(
     grid: &Grid,
     m: &Metrics,
-    fluid: &[bool],
+    faces: &Faces,
     unknown: &[u32],
     n: usize,
 ) -> Result<SparseColMat<u32, f64>, PressureError> {
+    let fluid = &faces.fluid;
     let (nx, ny) = (grid.nx, grid.ny);
     let mut trip: Vec<Triplet<u32, u32, f64>> = Vec::with_capacity(3 * n);
     let mut diag = vec![0.0; n];
@@ -237,11 +256,21 @@ fn assemble(
             if !fluid[k] {
                 continue;
             }
-            if i + 1 < nx && fluid[k + 1] {
-                couple(k, k + 1, grid.dy[j] / m.x.centre_gap(i as isize + 1));
+            let open_u = faces.u_open[i + 1 + (nx + 1) * j];
+            if i + 1 < nx && fluid[k + 1] && open_u > 0.0 {
+                couple(
+                    k,
+                    k + 1,
+                    open_u * grid.dy[j] / m.x.centre_gap(i as isize + 1),
+                );
             }
-            if j + 1 < ny && fluid[k + nx] {
-                couple(k, k + nx, grid.dx[i] / m.y.centre_gap(j as isize + 1));
+            let open_v = faces.v_open[i + nx * (j + 1)];
+            if j + 1 < ny && fluid[k + nx] && open_v > 0.0 {
+                couple(
+                    k,
+                    k + nx,
+                    open_v * grid.dx[i] / m.y.centre_gap(j as isize + 1),
+                );
             }
         }
     }

@@ -289,11 +289,16 @@ impl Simulation {
                 Err(e) => break RunStatus::Diverged(e),
             }
         };
+        let recirculation_length = match self.config.case {
+            Case::Static { .. } => self.flow.recirculation_length(),
+            _ => None,
+        };
         RunRecord {
             status,
             samples,
             t_release: self.release_time(),
             cells: self.flow.grid.cells(),
+            recirculation_length,
         }
     }
 }

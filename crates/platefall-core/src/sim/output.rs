@@ -104,4 +104,7 @@ pub struct RunRecord {
     pub t_release: f64,
     /// Cells of the grid.
     pub cells: usize,
+    /// A static plate's recirculation length at the end of the run (chords; see
+    /// `FlowSolver::recirculation_length`).
+    pub recirculation_length: Option<f64>,
 }

@@ -158,6 +158,7 @@ impl RunConfig {
     /// Checks every value; the first bad one is reported.
     fn check(&self) -> Result<(), InputError> {
         self.grid.validate()?;
+        self.grid.check_representable()?;
         self.flow.validate()?;
         let t = &self.time;
         check_range(Param::TEnd, t.t_end, 0.0, 1e5, true)?;

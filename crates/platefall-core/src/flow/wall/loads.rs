@@ -1,0 +1,462 @@
+//! The force and moment of the fluid on the plate (SPEC §5), to second order in the spacing.
+//!
+//! The plate's boundary is cut into arcs at its corners and where its normal turns through 45°.
+//! On an arc whose normal is closer to y (x), the loads are sampled where vertical (horizontal)
+//! grid lines cross it, so that each sample reads the unknowns that lie on its line, at their own
+//! positions, with no interpolation:
+//!
+//! - pressure: the two nearest cell centres on the fluid side at distances d₁ < d₂ give the wall
+//!   value by linear extrapolation, p_w = (d₂p₁ − d₁p₂)/(d₂ − d₁);
+//! - viscous stress: on a rigid no-slip wall the relative velocity w = u − g vanishes, so its
+//!   gradient is normal to the wall, ∇w = a nᵀ, the normal viscous stress vanishes
+//!   (a·n = −∂w_t/∂t = 0) and the traction is μ a. Each component of a comes from the two
+//!   nearest points of that velocity component on the line: the derivative along the line, exact
+//!   for a quadratic through w = 0 at the wall, (w₁d₂² − w₂d₁²)/(d₁d₂(d₂ − d₁)), divided by
+//!   n·e (e: the line's direction into the fluid; |n·e| ≥ 1/√2 by the choice of family).
+//!
+//! Each sample stands for the part of its arc nearer to it than to its neighbours, and the
+//! integrals of n, r × n, x and y over that part are exact (the outline is a polygon), so the
+//! sums are the midpoint rule of the load integrals: F = ∫(−p n + μ a) ds, M = ∫ r × (−p n + μ a) ds.
+//! Where the line holds only one usable point (a gap narrower than two spacings), the sample is
+//! first order (p_w = p₁, a = w₁/(d₁ n·e)).
+use super::faces::Faces;
+use super::lines::Lines;
+use super::stencils::wall_velocity;
+use crate::flow::array::Padded;
+use crate::flow::frame::Frame;
+use crate::flow::metrics::Component;
+use crate::flow::plate::BodyAxesLoads;
+use crate::grid::Grid;
+use crate::shape::{Covered, Outline};
+
+/// Consecutive edges whose normals turn by more than this (cos 45°) start a new arc (a corner).
+const CORNER_COS: f64 = std::f64::consts::FRAC_1_SQRT_2;
+
+/// What a sample reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Quantity {
+    Pressure,
+    Velocity(Component),
+}
+
+/// One unknown read by a sample: its grid indices (i, j), its distance from the wall along the
+/// line, and its position.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Probe {
+    i: usize,
+    j: usize,
+    d: f64,
+    at: [f64; 2],
+}
+
+/// The integrals over the part of the boundary a sample stands for.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Share {
+    len: f64,
+    int_x: f64,
+    int_y: f64,
+    n: [f64; 2],
+    r_cross_n: f64,
+}
+
+impl Share {
+    fn add(&mut self, o: &Share) {
+        self.len += o.len;
+        self.int_x += o.int_x;
+        self.int_y += o.int_y;
+        self.n[0] += o.n[0];
+        self.n[1] += o.n[1];
+        self.r_cross_n += o.r_cross_n;
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Sample {
+    first: Probe,
+    second: Option<Probe>,
+    /// n·e.
+    dot: f64,
+    share: Share,
+}
+
+/// The load samples of the three quantities.
+#[derive(Clone, Debug, Default)]
+pub struct Loads {
+    pressure: Vec<Sample>,
+    u: Vec<Sample>,
+    v: Vec<Sample>,
+}
+
+/// One family of grid lines for one quantity: the lines' fixed coordinates, the coordinates of
+/// the quantity's points along them, and the lines' cover.
+struct Family<'a> {
+    lines: &'a [f64],
+    points: &'a [f64],
+    cover: &'a [Covered],
+}
+
+/// An arc of the boundary: consecutive edges, with the arc length at each edge's start.
+struct Arc {
+    edges: Vec<usize>,
+    start_s: Vec<f64>,
+    length: f64,
+    /// Whether vertical lines sample it (its normals are closer to y).
+    vertical: bool,
+}
+
+impl Loads {
+    /// The samples of the plate `body` on `grid`.
+    pub fn new(grid: &Grid, body: &Outline, lines: &Lines, faces: &Faces, tol: f64) -> Loads {
+        let arcs = arcs(body);
+        let mut loads = Loads::default();
+        for q in [
+            Quantity::Pressure,
+            Quantity::Velocity(Component::U),
+            Quantity::Velocity(Component::V),
+        ] {
+            let per_arc: Vec<Vec<Sample>> = arcs
+                .iter()
+                .map(|arc| arc_samples(grid, body, lines, faces, arc, q, tol))
+                .collect();
+            let samples = merge_empty_arcs(&arcs, body, per_arc);
+            match q {
+                Quantity::Pressure => loads.pressure = samples,
+                Quantity::Velocity(Component::U) => loads.u = samples,
+                Quantity::Velocity(Component::V) => loads.v = samples,
+            }
+        }
+        loads
+    }
+
+    /// Force (body axes) and moment of the fluid on the plate; shear at Reynolds number `re`
+    /// (∞: pressure alone).
+    pub fn evaluate(
+        &self,
+        u: &Padded,
+        v: &Padded,
+        p: &[f64],
+        nx: usize,
+        frame: &Frame,
+        re: f64,
+    ) -> BodyAxesLoads {
+        let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
+        for s in &self.pressure {
+            let value = |q: &Probe| p[q.i + nx * q.j];
+            let p1 = value(&s.first);
+            let pw = match &s.second {
+                Some(q) => (q.d * p1 - s.first.d * value(q)) / (q.d - s.first.d),
+                None => p1,
+            };
+            fx -= pw * s.share.n[0];
+            fy -= pw * s.share.n[1];
+            mz -= pw * s.share.r_cross_n;
+        }
+        let (fx_pressure, fy_pressure) = (fx, fy);
+        let mu = 1.0 / re;
+        if mu > 0.0 {
+            for (c, samples, field) in [(Component::U, &self.u, u), (Component::V, &self.v, v)] {
+                for s in samples {
+                    let w = |q: &Probe| {
+                        field.get(q.i as isize, q.j as isize) - wall_velocity(c, frame, q.at)
+                    };
+                    let w1 = w(&s.first);
+                    let d1 = s.first.d;
+                    let slope = match &s.second {
+                        Some(q) => (w1 * q.d * q.d - w(q) * d1 * d1) / (d1 * q.d * (q.d - d1)),
+                        None => w1 / d1,
+                    };
+                    let traction = mu * slope / s.dot;
+                    match c {
+                        Component::U => {
+                            fx += traction * s.share.len;
+                            mz -= traction * s.share.int_y;
+                        }
+                        Component::V => {
+                            fy += traction * s.share.len;
+                            mz += traction * s.share.int_x;
+                        }
+                    }
+                }
+            }
+        }
+        BodyAxesLoads {
+            fx,
+            fy,
+            moment: mz,
+            fx_pressure,
+            fy_pressure,
+        }
+    }
+
+    /// Number of samples (pressure, u, v), for reports.
+    pub fn counts(&self) -> (usize, usize, usize) {
+        (self.pressure.len(), self.u.len(), self.v.len())
+    }
+
+    /// The total boundary length the pressure samples stand for (the outline's perimeter).
+    pub fn perimeter(&self) -> f64 {
+        self.pressure.iter().map(|s| s.share.len).sum()
+    }
+}
+
+/// The outline cut into arcs at corners and 45° turns.
+fn arcs(body: &Outline) -> Vec<Arc> {
+    let n = body.len();
+    let normals: Vec<[f64; 2]> = (0..n).map(|k| body.normal(k)).collect();
+    let vertical = |nr: [f64; 2]| nr[1].abs() >= nr[0].abs();
+    let starts: Vec<usize> = (0..n)
+        .filter(|&k| {
+            let (a, b) = (normals[(k + n - 1) % n], normals[k]);
+            vertical(a) != vertical(b) || a[0] * b[0] + a[1] * b[1] < CORNER_COS
+        })
+        .collect();
+    let starts = if starts.is_empty() { vec![0] } else { starts };
+    let mut out = Vec::with_capacity(starts.len());
+    for (m, &first) in starts.iter().enumerate() {
+        let next = starts[(m + 1) % starts.len()];
+        let count = if next > first {
+            next - first
+        } else {
+            next + n - first
+        };
+        let edges: Vec<usize> = (0..count).map(|k| (first + k) % n).collect();
+        let mut start_s = Vec::with_capacity(count);
+        let mut s = 0.0;
+        for &e in &edges {
+            start_s.push(s);
+            let (a, b) = body.edge(e);
+            s += (b[0] - a[0]).hypot(b[1] - a[1]);
+        }
+        out.push(Arc {
+            vertical: vertical(normals[first]),
+            edges,
+            start_s,
+            length: s,
+        });
+    }
+    out
+}
+
+/// The family of lines that samples quantity `q` on an arc (vertical or horizontal lines).
+fn family<'a>(grid: &'a Grid, lines: &'a Lines, q: Quantity, vertical: bool) -> Family<'a> {
+    use Component::{U, V};
+    match (q, vertical) {
+        (Quantity::Pressure, true) => Family {
+            lines: &grid.xc,
+            points: &grid.yc,
+            cover: &lines.v_centres,
+        },
+        (Quantity::Pressure, false) => Family {
+            lines: &grid.yc,
+            points: &grid.xc,
+            cover: &lines.h_centres,
+        },
+        (Quantity::Velocity(U), true) => Family {
+            lines: &grid.xn,
+            points: &grid.yc,
+            cover: &lines.v_nodes,
+        },
+        (Quantity::Velocity(U), false) => Family {
+            lines: &grid.yc,
+            points: &grid.xn,
+            cover: &lines.h_centres,
+        },
+        (Quantity::Velocity(V), true) => Family {
+            lines: &grid.xc,
+            points: &grid.yn,
+            cover: &lines.v_centres,
+        },
+        (Quantity::Velocity(V), false) => Family {
+            lines: &grid.yn,
+            points: &grid.xc,
+            cover: &lines.h_nodes,
+        },
+    }
+}
+
+/// The samples of quantity `q` on one arc, with their shares of it.
+fn arc_samples(
+    grid: &Grid,
+    body: &Outline,
+    lines: &Lines,
+    faces: &Faces,
+    arc: &Arc,
+    q: Quantity,
+    tol: f64,
+) -> Vec<Sample> {
+    let fam = family(grid, lines, q, arc.vertical);
+    // Along a vertical line the coordinate is y (index 1) and the line's position is x.
+    let (along, across) = if arc.vertical { (1, 0) } else { (0, 1) };
+    let mut found: Vec<(f64, Sample)> = Vec::new();
+    for (m, &e) in arc.edges.iter().enumerate() {
+        let (a, b) = body.edge(e);
+        if a[across] == b[across] {
+            continue;
+        }
+        let nrm = body.normal(e);
+        let (lo, hi) = (a[across].min(b[across]), a[across].max(b[across]));
+        let first_line = fam.lines.partition_point(|&x| x < lo);
+        for (l, &x) in fam.lines.iter().enumerate().skip(first_line) {
+            if x > hi {
+                break;
+            }
+            let tau = (x - a[across]) / (b[across] - a[across]);
+            if m > 0 && tau <= 0.0 {
+                continue; // the previous edge's end
+            }
+            let mut wall = [0.0; 2];
+            wall[across] = x;
+            wall[along] = a[along] + tau * (b[along] - a[along]);
+            let len_e = (b[0] - a[0]).hypot(b[1] - a[1]);
+            let s = arc.start_s[m] + tau * len_e;
+            let up = nrm[along] > 0.0;
+            let probes = probes_along(&fam, faces, grid, q, l, wall[along], up, tol, arc.vertical);
+            if let Some((first, second)) = probes {
+                found.push((
+                    s,
+                    Sample {
+                        first,
+                        second,
+                        dot: nrm[along].abs(),
+                        share: Share::default(),
+                    },
+                ));
+            }
+        }
+    }
+    found.sort_by(|p, q| p.0.total_cmp(&q.0));
+    found.dedup_by(|p, q| (p.0 - q.0).abs() <= tol);
+    let n = found.len();
+    (0..n)
+        .map(|k| {
+            let s0 = if k == 0 {
+                0.0
+            } else {
+                0.5 * (found[k - 1].0 + found[k].0)
+            };
+            let s1 = if k + 1 == n {
+                arc.length
+            } else {
+                0.5 * (found[k].0 + found[k + 1].0)
+            };
+            let mut sample = found[k].1;
+            sample.share = share(body, arc, s0, s1);
+            sample
+        })
+        .collect()
+}
+
+/// The first two usable points of line `l` beyond the wall coordinate `s` (towards + when `up`):
+/// outside the plate, fluid unknowns, with no wall between them.
+#[allow(clippy::too_many_arguments)]
+fn probes_along(
+    fam: &Family,
+    faces: &Faces,
+    grid: &Grid,
+    q: Quantity,
+    l: usize,
+    s: f64,
+    up: bool,
+    tol: f64,
+    vertical: bool,
+) -> Option<(Probe, Option<Probe>)> {
+    let cov = &fam.cover[l];
+    let pts = fam.points;
+    let next = |from: f64| -> Option<usize> {
+        if up {
+            let k = pts.partition_point(|&y| y <= from + tol);
+            (k < pts.len()).then_some(k)
+        } else {
+            let k = pts.partition_point(|&y| y < from - tol);
+            k.checked_sub(1)
+        }
+    };
+    let usable = |k: usize, from: f64| -> Option<Probe> {
+        let c = pts[k];
+        if cov.holding(c, tol).is_some() {
+            return None;
+        }
+        let limit = c;
+        let start = if up { from + tol } else { from - tol };
+        if cov.first_wall(start, up, limit).is_some() {
+            return None;
+        }
+        let (i, j) = if vertical { (l, k) } else { (k, l) };
+        let ok = match q {
+            Quantity::Pressure => faces.fluid[i + grid.nx * j],
+            Quantity::Velocity(Component::U) => faces.u_open[i + (grid.nx + 1) * j] > 0.0,
+            Quantity::Velocity(Component::V) => faces.v_open[i + grid.nx * j] > 0.0,
+        };
+        let at = if vertical {
+            [fam.lines[l], c]
+        } else {
+            [c, fam.lines[l]]
+        };
+        ok.then_some(Probe {
+            i,
+            j,
+            d: (c - s).abs(),
+            at,
+        })
+    };
+    let k1 = next(s)?;
+    let first = usable(k1, s)?;
+    let k2 = if up {
+        Some(k1 + 1).filter(|&k| k < pts.len())
+    } else {
+        k1.checked_sub(1)
+    };
+    let second = k2.and_then(|k| usable(k, pts[k1]));
+    Some((first, second))
+}
+
+/// The integrals over the part [s0, s1] of an arc.
+fn share(body: &Outline, arc: &Arc, s0: f64, s1: f64) -> Share {
+    let mut out = Share::default();
+    for (m, &e) in arc.edges.iter().enumerate() {
+        let (a, b) = body.edge(e);
+        let len_e = (b[0] - a[0]).hypot(b[1] - a[1]);
+        let (ea, eb) = (arc.start_s[m], arc.start_s[m] + len_e);
+        let (lo, hi) = (s0.max(ea), s1.min(eb));
+        if hi <= lo || len_e == 0.0 {
+            continue;
+        }
+        let point = |s: f64| {
+            let t = (s - ea) / len_e;
+            [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+        };
+        let (p, q) = (point(lo), point(hi));
+        let len = hi - lo;
+        let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
+        let n = body.normal(e);
+        out.add(&Share {
+            len,
+            int_x: len * mid[0],
+            int_y: len * mid[1],
+            n: [len * n[0], len * n[1]],
+            r_cross_n: len * (mid[0] * n[1] - mid[1] * n[0]),
+        });
+    }
+    out
+}
+
+/// One list of samples; an arc with no sample of its own (shorter than a spacing) gives its
+/// share to the last sample of the arc before it.
+fn merge_empty_arcs(arcs: &[Arc], body: &Outline, mut per_arc: Vec<Vec<Sample>>) -> Vec<Sample> {
+    let n = arcs.len();
+    for k in 0..n {
+        if !per_arc[k].is_empty() {
+            continue;
+        }
+        let whole = share(body, &arcs[k], 0.0, arcs[k].length);
+        let donor = (1..n)
+            .map(|d| (k + n - d) % n)
+            .find(|&m| !per_arc[m].is_empty());
+        if let Some(m) = donor {
+            if let Some(last) = per_arc[m].last_mut() {
+                last.share.add(&whole);
+            }
+        }
+    }
+    per_arc.into_iter().flatten().collect()
+}
