@@ -8,6 +8,7 @@ use std::sync::Arc;
 
 use platefall_core::flow::Frame;
 use platefall_core::grid::GridGeometry;
+use platefall_core::shape::Shape;
 use platefall_core::sim::{CaseKind, FieldSnapshot, StepSample};
 use platefall_post::{default_wake_window, ViewDefaults};
 use platefall_record::messages::RunInfo;
@@ -74,7 +75,8 @@ pub fn run_info_until(grid: GridGeometry, t_end: Option<f64>) -> RunInfo {
         config_json: "{\n  \"case\": \"free\",\n  \"re\": 4770\n}".into(),
         command_line: "platefall free --synthetic".into(),
         version: "0.1.0-test".into(),
-        thickness: 0.0625,
+        section: Arc::new(Shape::rect(0.0625).outline()),
+        section_label: Shape::rect(0.0625).describe(),
         grid: Arc::new(grid),
         view: ViewDefaults {
             wake_window: default_wake_window(CaseKind::Free),

@@ -5,6 +5,7 @@
 use std::sync::Arc;
 
 use platefall_core::grid::GridGeometry;
+use platefall_core::shape::Outline;
 use platefall_core::sim::{CaseKind, FieldSnapshot, RunStatus, StepSample, ValidatedConfig};
 use platefall_post::ViewDefaults;
 
@@ -21,9 +22,10 @@ pub struct RunInfo {
     pub command_line: String,
     /// Program version (`CARGO_PKG_VERSION` plus git describe when known).
     pub version: String,
-    /// Plate thickness as a fraction of the chord (the plate is the rectangle
-    /// [-0.5, 0.5] x [-t/2, t/2] in body coordinates, chord = 1).
-    pub thickness: f64,
+    /// The plate's section in body coordinates (chord = 1), as the flow sees it.
+    pub section: Arc<Outline>,
+    /// The section in words, e.g. "rectangle t/c = 0.015625".
+    pub section_label: String,
     /// Body-fixed grid geometry shared by every field snapshot.
     pub grid: Arc<GridGeometry>,
     /// The viewer's defaults for the run (wake window, plot ranges).
@@ -44,7 +46,8 @@ impl RunInfo {
             config_json: serde_json::to_string_pretty(config).unwrap_or_default(),
             command_line,
             version,
-            thickness: grid.thickness,
+            section: Arc::new(config.grid.shape.outline()),
+            section_label: config.grid.shape.describe(),
             grid: Arc::new(grid.geometry()),
             view: ViewDefaults::of(config),
             // A run that stops after a number of turns has no known end time: show no ETA rather

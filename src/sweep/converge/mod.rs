@@ -85,9 +85,6 @@ fn dispatch(request: &ConvergeRequest, commands: &dyn CaseCommands) -> Result<Ex
     let cases = plan
         .checked_cases(commands)
         .map_err(|e| Failure::input(format!("converge: {e}")))?;
-    if let Some(note) = &study.warning {
-        eprintln!("warning: {note}");
-    }
     let code = local(Some(study.jobs), progress, &layout, &plan, &cases)?;
     if code == Exit::Interrupted {
         return Ok(code);

@@ -58,8 +58,6 @@ pub(crate) struct Study {
     pub(crate) refined: Refined,
     pub(crate) plan_text: String,
     pub(crate) jobs: usize,
-    /// A caution for the user (e.g. a plate whose thickness changes with the resolution).
-    pub(crate) warning: Option<String>,
 }
 
 /// `--refine NAME=V1,V2,...`: the option and its values as written (numbers, at least three,
@@ -215,16 +213,6 @@ pub(crate) fn study_of(
         let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
         fixed.push(("threads".into(), (cores / jobs).max(1).to_string()));
     }
-    let warning = (refined == Refined::Resolution
-        && !fixed
-            .iter()
-            .any(|(n, _)| n == "thickness" || n == "seed-grid")
-        && !fixed.iter().any(|(n, _)| n == "chord-mm"))
-    .then(|| {
-        "the plate is one cell thick by default, so each resolution is a different body: give \
-         --thickness to keep it fixed"
-            .to_string()
-    });
     let mut text = format!(
         "# Written by `platefall converge`: the levels of a refinement study of `{case}`.\n\
          case = {}\nname = {}\n\n[fixed]\n",
@@ -250,7 +238,6 @@ pub(crate) fn study_of(
         refined,
         plan_text: text,
         jobs,
-        warning,
     })
 }
 

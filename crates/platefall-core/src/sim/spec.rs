@@ -13,6 +13,7 @@ use crate::body::{AbStart, Coupling, PlateProps};
 use crate::flow::FlowParams;
 use crate::grid::{Grid, GridSpec};
 use crate::param::{check_range, check_whole, rounded, InputError, Param};
+use crate::shape::Shape;
 
 /// The physical scales behind a run's units (SPEC §2): the chord c and the velocity scale U in SI
 /// units. Reports use them to give results in physical units; the solver never reads them.
@@ -260,8 +261,13 @@ impl RunConfig {
             Some(b) if self.case.is_coupled() => format!(", {}", b.source.describe(&b.props)),
             _ => String::new(),
         };
+        // A rectangle is the plate of every case unless said otherwise; other sections are named.
+        let section = match &self.grid.shape {
+            Shape::Rect { .. } => String::new(),
+            shape => format!(", {}", shape.describe()),
+        };
         format!(
-            "{case}{plate}, Re {}, N = {}",
+            "{case}{section}{plate}, Re {}, N = {}",
             r(self.flow.re),
             self.grid.resolution
         )

@@ -1,27 +1,6 @@
-//! Curves that grow over time (trajectory, strobe, α plots), logged one time segment per entity,
-//! and the plate outline they draw.
+//! Curves that grow over time (trajectory, strobe, α plots), logged one time segment per entity.
 use rerun::components::Radius;
 use rerun::{Color, LineStrips2D, RecordingStream};
-
-/// The plate drawn in a frame where it is turned by `angle`: its outline (constant on-screen
-/// width, visible when zoomed out) and its centreline with the plate's true thickness.
-pub(super) fn plate_drawing(thickness: f64, angle: f64) -> LineStrips2D {
-    let (sin, cos) = (angle.sin() as f32, angle.cos() as f32);
-    let turn = |strip: Vec<[f32; 2]>| -> Vec<[f32; 2]> {
-        strip
-            .into_iter()
-            .map(|[x, y]| [cos * x - sin * y, sin * x + cos * y])
-            .collect()
-    };
-    let strips = [plate_outline(thickness), vec![[-0.5, 0.0], [0.5, 0.0]]].map(turn);
-    LineStrips2D::new(strips)
-        .with_colors([Color::from_rgb(255, 255, 255)])
-        .with_radii([
-            Radius::new_ui_points(1.5),
-            Radius::new_scene_units((0.5 * thickness) as f32),
-        ])
-        .with_draw_order(50.0)
-}
 
 /// A curve that grows over time, stored as one entity per time segment so that nothing is
 /// re-sent more than a segment's worth: `{base}/{k:04}` holds the points of segment k.
@@ -128,10 +107,4 @@ impl SegmentedCurve {
                 .with_radii([self.radius]),
         )
     }
-}
-
-/// The plate rectangle in body coordinates (closed).
-pub(super) fn plate_outline(thickness: f64) -> Vec<[f32; 2]> {
-    let h = (0.5 * thickness) as f32;
-    vec![[-0.5, -h], [0.5, -h], [0.5, h], [-0.5, h], [-0.5, -h]]
 }

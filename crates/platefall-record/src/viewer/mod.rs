@@ -11,6 +11,7 @@ mod phase;
 mod polar;
 mod rrd_file;
 mod scene;
+mod section;
 mod sinks;
 mod statics;
 mod text;

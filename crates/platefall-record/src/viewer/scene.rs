@@ -12,7 +12,8 @@ use rerun::{
 };
 
 use super::blueprint::{send_default_blueprint, ViewFit};
-use super::curves::{plate_outline, SegmentedCurve};
+use super::curves::SegmentedCurve;
+use super::section::SectionDrawing;
 use super::images::log_field_images;
 use super::layout::*;
 use super::polar::{polar_axes, polar_curves};
@@ -30,7 +31,7 @@ pub(crate) struct Scene {
     painter: FieldPainter,
     image: ImageGrid,
     wake: WakeScene,
-    thickness: f64,
+    section: SectionDrawing,
     strobe_every: f64,
     pending: Vec<StepSample>,
     /// Longest a step waits before it is sent (None: file only, sent in full chunks).
@@ -68,12 +69,13 @@ impl Scene {
             plots: info.view.plot_ranges,
         };
         send_default_blueprint(&rec, &fit)?;
+        let section = SectionDrawing::new(&info.section);
         let wake = WakeScene::new(
             Arc::clone(&info.grid),
             wake_window,
             opts.view.wake_res,
             opts.streamlines_frame,
-            info.thickness,
+            section.clone(),
         );
         let painter = FieldPainter::new(
             Arc::clone(&info.grid),
@@ -98,7 +100,7 @@ impl Scene {
             painter,
             image,
             wake,
-            thickness: info.thickness,
+            section,
             strobe_every: if opts.strobe_every > 0.0 {
                 opts.strobe_every
             } else {
@@ -211,14 +213,7 @@ impl Scene {
             self.next_strobe_t =
                 (s.t / self.strobe_every).floor() * self.strobe_every + self.strobe_every;
             self.set_time(s.step, s.t);
-            let (c, sn) = (s.theta.cos(), s.theta.sin());
-            let outline = plate_outline(self.thickness)
-                .into_iter()
-                .map(|[x, y]| {
-                    let (x, y) = (x as f64, y as f64);
-                    [(s.x + c * x - sn * y) as f32, (s.y + sn * x + c * y) as f32]
-                })
-                .collect();
+            let outline = self.section.placed(s.x, s.y, s.theta);
             self.strobe.push_strip(&self.rec, s.t, outline)?;
             self.strobe.log(&self.rec)?;
         }

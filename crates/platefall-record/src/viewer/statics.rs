@@ -6,7 +6,7 @@ use rerun::{
     TextDocument, Transform3D,
 };
 
-use super::curves::plate_drawing;
+use super::section::SectionDrawing;
 use super::layout::{paths, FIELD_SCALES, SERIES};
 use super::polar::polar_axes;
 use super::text::config_markdown;
@@ -24,7 +24,7 @@ pub(super) fn log_static(
     wake: &ImageGrid,
 ) -> RecordingStreamResult<()> {
     log_screen_frames(rec)?;
-    log_plate(rec, info.thickness, &opts.field_window)?;
+    log_plate(rec, &SectionDrawing::new(&info.section), &opts.field_window)?;
     log_field_styles(rec, paths::PLATE, img)?;
     log_field_styles(rec, paths::WAKE, wake)?;
     log_wake_window(rec, &wake.window)?;
@@ -64,8 +64,12 @@ fn log_screen_frames(rec: &RecordingStream) -> RecordingStreamResult<()> {
 /// The plate's outline (constant on-screen width, visible when zoomed out) with a fill of its
 /// true thickness, and a faint circle swept by the image window's corners that keeps the flow
 /// views' bounds steady while the window turns with the plate.
-fn log_plate(rec: &RecordingStream, thickness: f64, w: &FieldWindow) -> RecordingStreamResult<()> {
-    rec.log_static(paths::OUTLINE, &plate_drawing(thickness, 0.0))?;
+fn log_plate(
+    rec: &RecordingStream,
+    section: &SectionDrawing,
+    w: &FieldWindow,
+) -> RecordingStreamResult<()> {
+    rec.log_static(paths::OUTLINE, &section.drawing(0.0))?;
     let reach = window_reach(w) as f32;
     let circle: Vec<[f32; 2]> = (0..=128)
         .map(|k| {

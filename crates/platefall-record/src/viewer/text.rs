@@ -56,7 +56,7 @@ pub(super) fn config_markdown(
            x in {xs}, y in {ys} (body axes, chords); streamlines and speed in frame \
            {fr} ({frd}); timelines `time` (convective time t·U/c, shown as seconds) and `step`.\n\
          {view}\
-         - **grid**: {nx} × {ny} cells; plate thickness {th} c.\n\n\
+         - **grid**: {nx} × {ny} cells; plate section: {th}.\n\n\
          ## Configuration\n\n{json}",
         title = info.title,
         version = info.version,
@@ -71,7 +71,7 @@ pub(super) fn config_markdown(
         frd = opts.streamlines_frame.describe(),
         nx = info.grid.nx(),
         ny = info.grid.ny(),
-        th = info.thickness,
+        th = info.section_label,
         json = code_block("json", &info.config_json),
         view = view_markdown(info, wake),
     )

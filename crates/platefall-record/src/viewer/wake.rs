@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use rerun::{Quaternion, RecordingStream, RecordingStreamResult, Transform3D};
 
-use super::curves::plate_drawing;
+use super::section::SectionDrawing;
 use super::images::log_field_images;
 use super::layout::{paths, z_rotation, WAKE_IMAGE_LEVELS};
 use platefall_core::grid::GridGeometry;
@@ -23,7 +23,7 @@ const HEADING_SPAN: f64 = 4.0;
 pub(super) struct WakeScene {
     painter: WakePainter,
     heading: PathHeading,
-    thickness: f64,
+    section: SectionDrawing,
 }
 
 impl WakeScene {
@@ -32,12 +32,12 @@ impl WakeScene {
         window: FieldWindow,
         long_side: usize,
         frame: StreamFrame,
-        thickness: f64,
+        section: SectionDrawing,
     ) -> Self {
         Self {
             painter: WakePainter::new(grid, window, long_side, frame),
             heading: PathHeading::new(HEADING_SPAN),
-            thickness,
+            section,
         }
     }
 
@@ -71,7 +71,7 @@ impl WakeScene {
         )?;
         rec.log(
             paths::WAKE_PLATE,
-            &plate_drawing(self.thickness, theta - heading),
+            &self.section.drawing(theta - heading),
         )
     }
 
