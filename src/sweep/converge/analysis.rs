@@ -8,8 +8,8 @@ use crate::sweep::json::{get, parse_object, Object};
 use crate::sweep::layout::Layout;
 use crate::sweep::plan::CaseSpec;
 use crate::sweep::results::outcome;
-use platefall_post::phase::CaseState;
 use platefall_post::convergence::{study, Level, Triple, SAFETY_FACTOR};
+use platefall_post::phase::CaseState;
 
 /// One level of the study.
 #[derive(Clone, Debug, Serialize)]
@@ -131,7 +131,9 @@ pub(crate) fn analyse(layout: &Layout, cases: &[CaseSpec], refined: &Refined) ->
                 mean_dt: t.zip(n).filter(|(_, n)| *n > 0.0).map(|(t, n)| t / n),
                 ci_batches: num(&s, "ci_batches").map(|x| x as u64),
             };
-            let usable = (status == CaseState::Completed).then_some(summary).flatten();
+            let usable = (status == CaseState::Completed)
+                .then_some(summary)
+                .flatten();
             (info, usable)
         })
         .collect();

@@ -21,8 +21,8 @@ mod table;
 use std::path::{Path, PathBuf};
 
 use super::commands::{local, open_prepared};
-use super::layout::Layout;
 use super::failure::Failure;
+use super::layout::Layout;
 use super::{CaseCommands, ProgressMode};
 use crate::exit::Exit;
 use platefall_record::output::write_atomically;
@@ -90,7 +90,11 @@ fn dispatch(request: &ConvergeRequest, commands: &dyn CaseCommands) -> Result<Ex
         return Ok(code);
     }
     let written = write_study(&layout, &study.refined, commands)?;
-    Ok(if code != Exit::Completed { code } else { written })
+    Ok(if code != Exit::Completed {
+        code
+    } else {
+        written
+    })
 }
 
 /// `collect DIR`: the study of a directory's finished levels.

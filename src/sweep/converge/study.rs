@@ -281,9 +281,11 @@ mod tests {
                 ("seed-grid".into(), "true".into())
             ]
         );
-        assert!(fixed_options(CaseKind::Free, &["--nope".to_string()], &cases)
-            .unwrap_err()
-            .contains("no option --nope"));
+        assert!(
+            fixed_options(CaseKind::Free, &["--nope".to_string()], &cases)
+                .unwrap_err()
+                .contains("no option --nope")
+        );
         assert!(fixed_options(CaseKind::Free, &["0.1".to_string()], &cases).is_err());
         assert_eq!(toml_string("a\"b\\c"), "\"a\\\"b\\\\c\"");
     }

@@ -225,9 +225,8 @@ impl FlowSolver {
         let metrics = Metrics::new(&grid);
         let nu = 1.0 / params.re;
         let wall = Wall::new(&grid, &metrics, nu);
-        let pressure =
-            Pressure::new(&grid, &metrics, &wall.faces)
-                .map_err(|e| FlowError::Setup(SetupError::Pressure { reason: e.0 }))?;
+        let pressure = Pressure::new(&grid, &metrics, &wall.faces)
+            .map_err(|e| FlowError::Setup(SetupError::Pressure { reason: e.0 }))?;
         let min_dx = grid.dx.iter().copied().fold(f64::INFINITY, f64::min);
         let min_dy = grid.dy.iter().copied().fold(f64::INFINITY, f64::min);
         let dt_visc =

@@ -13,10 +13,10 @@ use rerun::{
 
 use super::blueprint::{send_default_blueprint, ViewFit};
 use super::curves::SegmentedCurve;
-use super::section::SectionDrawing;
 use super::images::log_field_images;
 use super::layout::*;
 use super::polar::{polar_axes, polar_curves};
+use super::section::SectionDrawing;
 use super::statics::{log_static, window_reach};
 use super::text::summary_markdown;
 use super::wake::WakeScene;

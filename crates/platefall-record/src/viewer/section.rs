@@ -41,7 +41,11 @@ impl SectionDrawing {
             let y = y0 + (k as f64 + 0.5) * spacing;
             for piece in section.covered(LineDir::Horizontal, y).intervals {
                 let (lo, hi) = (piece.lo + r, piece.hi - r);
-                let (lo, hi) = if lo < hi { (lo, hi) } else { (0.5 * (lo + hi), 0.5 * (lo + hi)) };
+                let (lo, hi) = if lo < hi {
+                    (lo, hi)
+                } else {
+                    (0.5 * (lo + hi), 0.5 * (lo + hi))
+                };
                 fill.push([[lo as f32, y as f32], [hi as f32, y as f32]]);
             }
         }
@@ -103,7 +107,10 @@ mod tests {
                     let r = f64::from(d.fill_radius);
                     let along = section.covered(LineDir::Horizontal, y);
                     assert!(
-                        along.intervals.iter().any(|i| x - r >= i.lo - 1e-6 && x + r <= i.hi + 1e-6),
+                        along
+                            .intervals
+                            .iter()
+                            .any(|i| x - r >= i.lo - 1e-6 && x + r <= i.hi + 1e-6),
                         "{shape:?}: ({x}, {y}) r {r} outside"
                     );
                 }

@@ -6,9 +6,9 @@ use rerun::{
     TextDocument, Transform3D,
 };
 
-use super::section::SectionDrawing;
 use super::layout::{paths, FIELD_SCALES, SERIES};
 use super::polar::polar_axes;
+use super::section::SectionDrawing;
 use super::text::config_markdown;
 use crate::messages::RunInfo;
 use crate::options::RecordOptions;

@@ -6,9 +6,9 @@ use std::sync::Arc;
 
 use rerun::{Quaternion, RecordingStream, RecordingStreamResult, Transform3D};
 
-use super::section::SectionDrawing;
 use super::images::log_field_images;
 use super::layout::{paths, z_rotation, WAKE_IMAGE_LEVELS};
+use super::section::SectionDrawing;
 use platefall_core::grid::GridGeometry;
 use platefall_core::sim::{FieldSnapshot, StepSample};
 use platefall_post::{
@@ -69,10 +69,7 @@ impl WakeScene {
                 Quaternion::from_xyzw(z_rotation(heading)),
             ),
         )?;
-        rec.log(
-            paths::WAKE_PLATE,
-            &self.section.drawing(theta - heading),
-        )
+        rec.log(paths::WAKE_PLATE, &self.section.drawing(theta - heading))
     }
 
     /// Paints and logs the wake of `snap` (the caller has set the snapshot's time).
