@@ -15,7 +15,7 @@ fn fmt_opt(x: Option<f64>, digits: usize) -> String {
 }
 
 /// `value ± half-width` when the value has a 95 % interval (the half-width to two significant
-/// digits, the value to the same decimal place), else the value as [`fmt_opt`] gives it.
+/// digits, the value to the same decimal place), else the value as `fmt_opt` gives it.
 pub fn pm(x: Option<f64>, half_width: Option<f64>, digits: usize) -> String {
     match (x, half_width) {
         (Some(v), Some(hw)) if hw.is_finite() && hw > 0.0 => {

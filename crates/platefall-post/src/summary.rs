@@ -190,7 +190,7 @@ fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
     (!lags.is_empty()).then(|| lags.iter().sum::<f64>() / lags.len() as f64)
 }
 
-/// The lag of [`lag_cd_behind_cl`] in each half-turn of the window.
+/// The lag of `lag_cd_behind_cl` in each half-turn of the window.
 pub fn lags_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Vec<f64> {
     lag_list(samples, w).unwrap_or_default()
 }

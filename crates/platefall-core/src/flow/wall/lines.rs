@@ -11,13 +11,13 @@ const MARGIN: usize = 3;
 /// The covered intervals of every grid line (empty away from the plate).
 #[derive(Clone, Debug, Default)]
 pub struct Lines {
-    /// x = xₙ[i], i = 0..=nx.
+    /// `x = xₙ[i]`, `i = 0..=nx`.
     pub v_nodes: Vec<Covered>,
-    /// x = x_c[i], i = 0..nx.
+    /// `x = x_c[i]`, `i = 0..nx`.
     pub v_centres: Vec<Covered>,
-    /// y = yₙ[j], j = 0..=ny.
+    /// `y = yₙ[j]`, `j = 0..=ny`.
     pub h_nodes: Vec<Covered>,
-    /// y = y_c[j], j = 0..ny.
+    /// `y = y_c[j]`, `j = 0..ny`.
     pub h_centres: Vec<Covered>,
 }
 
