@@ -93,6 +93,11 @@ impl Exit {
         }
     }
 
+    /// `text` followed by the exit codes of a sweep (the long help of `sweep` and `converge`).
+    pub(crate) fn sweep_long_help(text: &str) -> String {
+        format!("{text}\n\n{}", Exit::help(true))
+    }
+
     /// The exit-code table of `--help`: for the case subcommands, or (`sweep`) for sweeps.
     pub(crate) fn help(sweep: bool) -> String {
         let mut text = String::from("Exit codes:");

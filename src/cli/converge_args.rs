@@ -18,11 +18,6 @@ whose summary is complete is not run again, so the same command resumes a stoppe
 is DIR/convergence.md and DIR/convergence.json; `platefall converge collect DIR` rewrites them from \
 the finished levels.";
 
-/// The long help's closing text: the example and the exit codes.
-fn after_help() -> String {
-    format!("{AFTER_HELP}\n\n{}", Exit::help(true))
-}
-
 /// Run one case at three or more values of a refined option (resolution, cc, cfl, dt-max or
 /// extent) and report, per quantity of its summary, the observed order of convergence, the
 /// Richardson extrapolation and the grid-convergence index, with the runs' 95 % intervals deciding
@@ -32,7 +27,7 @@ fn after_help() -> String {
     args_conflicts_with_subcommands = true,
     subcommand_negates_reqs = true,
     after_help = Exit::help(true),
-    after_long_help = after_help()
+    after_long_help = Exit::sweep_long_help(AFTER_HELP)
 )]
 pub struct ConvergeArgs {
     #[command(subcommand)]

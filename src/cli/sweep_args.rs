@@ -17,11 +17,6 @@ examples/sweep-static.toml and docs/user-guide.md, \"Parameter sweeps\".
 A case is done when DIR/cases/<id>/summary.json says completed or diverged; rerunning the plan runs \
 only the others. Ctrl-C stops launching, lets the running cases finalise and merges the results.";
 
-/// The long help's closing text: the plan format and the exit codes.
-fn after_help() -> String {
-    format!("{AFTER_HELP}\n\n{}", Exit::help(true))
-}
-
 /// Run a parameter sweep of one case from a plan file (TOML): locally with --jobs cases at once,
 /// or as a Slurm job array with --slurm; `collect` merges a directory's finished cases.
 #[derive(Args, Debug)]
@@ -29,7 +24,7 @@ fn after_help() -> String {
     args_conflicts_with_subcommands = true,
     subcommand_negates_reqs = true,
     after_help = Exit::help(true),
-    after_long_help = after_help()
+    after_long_help = Exit::sweep_long_help(AFTER_HELP)
 )]
 pub struct SweepArgs {
     #[command(subcommand)]

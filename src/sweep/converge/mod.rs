@@ -23,6 +23,7 @@ use std::path::{Path, PathBuf};
 use super::commands::{local, open_prepared};
 use super::failure::Failure;
 use super::layout::Layout;
+use super::plan::CaseSpec;
 use super::{CaseCommands, ProgressMode};
 use crate::exit::Exit;
 use platefall_record::output::write_atomically;
@@ -89,7 +90,7 @@ fn dispatch(request: &ConvergeRequest, commands: &dyn CaseCommands) -> Result<Ex
     if code == Exit::Interrupted {
         return Ok(code);
     }
-    let written = write_study(&layout, &study.refined, commands)?;
+    let written = write_study(&layout, &cases, &study.refined)?;
     Ok(if code != Exit::Completed {
         code
     } else {
@@ -99,7 +100,7 @@ fn dispatch(request: &ConvergeRequest, commands: &dyn CaseCommands) -> Result<Ex
 
 /// `collect DIR`: the study of a directory's finished levels.
 fn collect(dir: &Path, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
-    let (layout, plan, _) = open_prepared(dir, commands)?;
+    let (layout, plan, manifest) = open_prepared(dir, commands)?;
     let refined = match plan.grid.as_slice() {
         [axis] if plan.zip.is_empty() => Refined::from_name(&axis.name).map_err(Failure::input)?,
         _ => {
@@ -110,18 +111,13 @@ fn collect(dir: &Path, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
             )))
         }
     };
-    write_study(&layout, &refined, commands)
+    write_study(&layout, &manifest.cases, &refined)
 }
 
 /// Analyses the levels, writes `convergence.json` and `convergence.md`, prints the table;
 /// completed, or diverged (3) when fewer than three levels completed or some did not complete.
-fn write_study(
-    layout: &Layout,
-    refined: &Refined,
-    commands: &dyn CaseCommands,
-) -> Result<Exit, Failure> {
-    let (_, _, manifest) = open_prepared(&layout.dir, commands)?;
-    let study = analysis::analyse(layout, &manifest.cases, refined);
+fn write_study(layout: &Layout, cases: &[CaseSpec], refined: &Refined) -> Result<Exit, Failure> {
+    let study = analysis::analyse(layout, cases, refined);
     let json = serde_json::to_string_pretty(&study).map_err(|e| Failure::output(e.to_string()))?;
     let md = table::markdown(&study);
     let out = |name: &str, bytes: &[u8]| -> Result<(), Failure> {
