@@ -32,13 +32,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         if s.t >= next || sim.finished() {
             next += 10.0;
             let l = sim.flow().loads();
-            // The plate moves along −x of the body axes: drag is +x force, C = 2 F.
+            // The drag is the force along the motion's opposite; split C_D in the ratio of
+            // the pressure and friction parts of that force component.
+            let pressure = s.cd * l.fx_pressure / l.fx;
             println!(
                 "t = {:6.2}: C_D = {:.4}  pressure {:.4}  friction {:.4}",
                 s.t,
                 s.cd,
-                2.0 * l.fx_pressure,
-                2.0 * (l.fx - l.fx_pressure)
+                pressure,
+                s.cd - pressure
             );
         }
     }

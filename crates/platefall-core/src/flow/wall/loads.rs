@@ -17,11 +17,14 @@
 //! Each sample stands for the part of its arc nearer to it than to its neighbours, and the
 //! integrals of n, r × n, x and y over that part are exact (the outline is a polygon), so the
 //! sums are the midpoint rule of the load integrals: F = ∫(−p n + μ a) ds, M = ∫ r × (−p n + μ a) ds.
-//! Where the line holds only one usable point (a gap narrower than two spacings), the sample is
-//! first order (p_w = p₁, a = w₁/(d₁ n·e)).
+//! A velocity point closer to the wall than half a spacing is a forced point (`stencils`), a
+//! straight line between the wall and the next point: it adds nothing to the quadratic but would
+//! amplify the projection's change of it by the spacing over its distance, so the velocity samples
+//! start at the next point. Where the line holds only one usable point (a gap narrower than two
+//! spacings), the sample is first order (p_w = p₁, a = w₁/(d₁ n·e)).
 use super::faces::Faces;
 use super::lines::Lines;
-use super::stencils::wall_velocity;
+use super::stencils::{wall_velocity, Forced};
 use crate::flow::array::Padded;
 use crate::flow::frame::Frame;
 use crate::flow::metrics::Component;
@@ -95,6 +98,17 @@ struct Family<'a> {
     cover: &'a [Covered],
 }
 
+/// What the samples are taken from: the grid, the plate, the lines' cover, the faces'
+/// classification and the forced points, and the distance within which a point is on the wall.
+struct Where<'a> {
+    grid: &'a Grid,
+    body: &'a Outline,
+    lines: &'a Lines,
+    faces: &'a Faces,
+    forced: &'a [Forced],
+    tol: f64,
+}
+
 /// An arc of the boundary: consecutive edges, with the arc length at each edge's start.
 struct Arc {
     edges: Vec<usize>,
@@ -102,23 +116,46 @@ struct Arc {
     length: f64,
     /// Whether vertical lines sample it (its normals are closer to y).
     vertical: bool,
+    /// Whether it starts at a corner (rather than where the sampling family changes).
+    corner: bool,
 }
 
 impl Loads {
-    /// The samples of the plate `body` on `grid`.
-    pub fn new(grid: &Grid, body: &Outline, lines: &Lines, faces: &Faces, tol: f64) -> Loads {
+    /// The samples of the plate `body` on `grid`; velocity samples pass over the `forced` points.
+    pub fn new(
+        grid: &Grid,
+        body: &Outline,
+        lines: &Lines,
+        (faces, forced): (&Faces, &[Forced]),
+        tol: f64,
+    ) -> Loads {
         let arcs = arcs(body);
+        let at = Where {
+            grid,
+            body,
+            lines,
+            faces,
+            forced,
+            tol,
+        };
         let mut loads = Loads::default();
         for q in [
             Quantity::Pressure,
             Quantity::Velocity(Component::U),
             Quantity::Velocity(Component::V),
         ] {
-            let per_arc: Vec<Vec<Sample>> = arcs
-                .iter()
-                .map(|arc| arc_samples(grid, body, lines, faces, arc, q, tol))
-                .collect();
-            let samples = merge_empty_arcs(&arcs, body, per_arc);
+            let mut placed: Vec<Placed> = Vec::new();
+            let mut offset = 0.0;
+            for (a, arc) in arcs.iter().enumerate() {
+                let found = arc_samples(&at, arc, q);
+                placed.extend(found.into_iter().map(|(s, sample)| Placed {
+                    s: offset + s,
+                    arc: a,
+                    sample,
+                }));
+                offset += arc.length;
+            }
+            let samples = weighted(body, &arcs, placed);
             match q {
                 Quantity::Pressure => loads.pressure = samples,
                 Quantity::Velocity(Component::U) => loads.u = samples,
@@ -227,8 +264,10 @@ fn arcs(body: &Outline) -> Vec<Arc> {
             let (a, b) = body.edge(e);
             s += (b[0] - a[0]).hypot(b[1] - a[1]);
         }
+        let (a, b) = (normals[(first + n - 1) % n], normals[first]);
         out.push(Arc {
             vertical: vertical(normals[first]),
+            corner: a[0] * b[0] + a[1] * b[1] < CORNER_COS,
             edges,
             start_s,
             length: s,
@@ -274,17 +313,10 @@ fn family<'a>(grid: &'a Grid, lines: &'a Lines, q: Quantity, vertical: bool) -> 
     }
 }
 
-/// The samples of quantity `q` on one arc, with their shares of it.
-fn arc_samples(
-    grid: &Grid,
-    body: &Outline,
-    lines: &Lines,
-    faces: &Faces,
-    arc: &Arc,
-    q: Quantity,
-    tol: f64,
-) -> Vec<Sample> {
-    let fam = family(grid, lines, q, arc.vertical);
+/// The samples of quantity `q` on one arc, with their arc-length positions along it.
+fn arc_samples(at: &Where, arc: &Arc, q: Quantity) -> Vec<(f64, Sample)> {
+    let (body, tol) = (at.body, at.tol);
+    let fam = family(at.grid, at.lines, q, arc.vertical);
     // Along a vertical line the coordinate is y (index 1) and the line's position is x.
     let (along, across) = if arc.vertical { (1, 0) } else { (0, 1) };
     let mut found: Vec<(f64, Sample)> = Vec::new();
@@ -310,7 +342,7 @@ fn arc_samples(
             let len_e = (b[0] - a[0]).hypot(b[1] - a[1]);
             let s = arc.start_s[m] + tau * len_e;
             let up = nrm[along] > 0.0;
-            let probes = probes_along(&fam, faces, grid, q, l, wall[along], up, tol, arc.vertical);
+            let probes = probes_along(at, &fam, q, l, wall[along], up, arc.vertical);
             if let Some((first, second)) = probes {
                 found.push((
                     s,
@@ -326,40 +358,21 @@ fn arc_samples(
     }
     found.sort_by(|p, q| p.0.total_cmp(&q.0));
     found.dedup_by(|p, q| (p.0 - q.0).abs() <= tol);
-    let n = found.len();
-    (0..n)
-        .map(|k| {
-            let s0 = if k == 0 {
-                0.0
-            } else {
-                0.5 * (found[k - 1].0 + found[k].0)
-            };
-            let s1 = if k + 1 == n {
-                arc.length
-            } else {
-                0.5 * (found[k].0 + found[k + 1].0)
-            };
-            let mut sample = found[k].1;
-            sample.share = share(body, arc, s0, s1);
-            sample
-        })
-        .collect()
+    found
 }
 
 /// The first two usable points of line `l` beyond the wall coordinate `s` (towards + when `up`):
 /// outside the plate, fluid unknowns, with no wall between them.
-#[allow(clippy::too_many_arguments)]
 fn probes_along(
+    src: &Where,
     fam: &Family,
-    faces: &Faces,
-    grid: &Grid,
     q: Quantity,
     l: usize,
     s: f64,
     up: bool,
-    tol: f64,
     vertical: bool,
 ) -> Option<(Probe, Option<Probe>)> {
+    let (faces, grid, tol) = (src.faces, src.grid, src.tol);
     let cov = &fam.cover[l];
     let pts = fam.points;
     let next = |from: f64| -> Option<usize> {
@@ -399,64 +412,158 @@ fn probes_along(
             at,
         })
     };
-    let k1 = next(s)?;
-    let first = usable(k1, s)?;
-    let k2 = if up {
-        Some(k1 + 1).filter(|&k| k < pts.len())
-    } else {
-        k1.checked_sub(1)
+    let step = |k: usize| {
+        if up {
+            Some(k + 1).filter(|&k| k < pts.len())
+        } else {
+            k.checked_sub(1)
+        }
     };
-    let second = k2.and_then(|k| usable(k, pts[k1]));
+    let mut k1 = next(s)?;
+    if let Quantity::Velocity(c) = q {
+        // A forced point is a straight line between the wall and the next point rather than an
+        // unknown of its own: the sample starts beyond it.
+        let (i, j) = if vertical { (l, k1) } else { (k1, l) };
+        let p = (i as isize, j as isize);
+        if src.forced.iter().any(|f| f.c == c && f.p == p) {
+            k1 = step(k1)?;
+        }
+    }
+    let first = usable(k1, s)?;
+    let second = step(k1).and_then(|k| usable(k, pts[k1]));
     Some((first, second))
 }
 
-/// The integrals over the part [s0, s1] of an arc.
-fn share(body: &Outline, arc: &Arc, s0: f64, s1: f64) -> Share {
-    let mut out = Share::default();
-    for (m, &e) in arc.edges.iter().enumerate() {
-        let (a, b) = body.edge(e);
-        let len_e = (b[0] - a[0]).hypot(b[1] - a[1]);
-        let (ea, eb) = (arc.start_s[m], arc.start_s[m] + len_e);
-        let (lo, hi) = (s0.max(ea), s1.min(eb));
-        if hi <= lo || len_e == 0.0 {
-            continue;
+/// A sample at its position along the whole boundary (from the first arc's start), on arc `arc`.
+struct Placed {
+    s: f64,
+    arc: usize,
+    sample: Sample,
+}
+
+/// The samples with their shares. The boundary is cut at its corners into pieces (one closed
+/// loop if it has none); along a piece the value between two neighbouring samples is
+/// interpolated linearly in arc length (hat weights), and from a piece's end sample to the
+/// piece's end it is held constant. A piece without a sample of its own (an end face thinner
+/// than a spacing) goes to the last sample before it. A sample at a corner belongs to the arc
+/// it was taken on.
+fn weighted(body: &Outline, arcs: &[Arc], placed: Vec<Placed>) -> Vec<Sample> {
+    let path = Path::new(body, arcs);
+    let (mut starts, mut piece_of) = (Vec::new(), Vec::with_capacity(arcs.len()));
+    let mut offset = 0.0;
+    for arc in arcs {
+        if arc.corner {
+            starts.push(offset);
         }
-        let point = |s: f64| {
-            let t = (s - ea) / len_e;
-            [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
-        };
-        let (p, q) = (point(lo), point(hi));
-        let len = hi - lo;
-        let mid = [0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])];
-        let n = body.normal(e);
-        out.add(&Share {
-            len,
-            int_x: len * mid[0],
-            int_y: len * mid[1],
-            n: [len * n[0], len * n[1]],
-            r_cross_n: len * (mid[0] * n[1] - mid[1] * n[0]),
-        });
+        piece_of.push(starts.len().saturating_sub(1));
+        offset += arc.length;
+    }
+    // Arcs before the first corner belong to the last piece, which wraps round.
+    let last_piece = starts.len().saturating_sub(1);
+    let first_arc_corner = arcs.iter().position(|a| a.corner).unwrap_or(0);
+    for p in piece_of.iter_mut().take(first_arc_corner) {
+        *p = last_piece;
+    }
+    let origin = starts.first().copied().unwrap_or(0.0);
+    // Positions from the first corner, so that each piece is one interval.
+    let unwrap = |s: f64, arc: usize| {
+        if arc < first_arc_corner {
+            s + path.length
+        } else {
+            s
+        }
+    };
+    let mut order: Vec<(usize, f64, Sample)> = placed
+        .into_iter()
+        .map(|p| (piece_of[p.arc], unwrap(p.s, p.arc), p.sample))
+        .collect();
+    order.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    let n = order.len();
+    let mut out: Vec<Sample> = order.iter().map(|o| o.2).collect();
+    for k in 0..n {
+        let next = (k + 1) % n;
+        let (pk, s0) = (order[k].0, order[k].1);
+        let (pn, s1) = (order[next].0, order[next].1);
+        let s1 = if next == 0 { s1 + path.length } else { s1 };
+        if pk == pn && (next != 0 || starts.is_empty()) {
+            out[k].share.add(&path.share(s0, s1, 1.0, 0.0));
+            out[next].share.add(&path.share(s0, s1, 0.0, 1.0));
+        } else {
+            // Up to the start of the next sample's piece (past any empty pieces), then from it.
+            let start_next = if next == 0 {
+                origin + path.length
+            } else {
+                starts[pn]
+            };
+            out[k].share.add(&path.share(s0, start_next, 1.0, 1.0));
+            out[next].share.add(&path.share(start_next, s1, 1.0, 1.0));
+        }
     }
     out
 }
 
-/// One list of samples; an arc with no sample of its own (shorter than a spacing) gives its
-/// share to the last sample of the arc before it.
-fn merge_empty_arcs(arcs: &[Arc], body: &Outline, mut per_arc: Vec<Vec<Sample>>) -> Vec<Sample> {
-    let n = arcs.len();
-    for k in 0..n {
-        if !per_arc[k].is_empty() {
-            continue;
+/// The boundary as one path of edges from the first arc's start, with the arc length at each
+/// edge's start.
+struct Path {
+    edges: Vec<([f64; 2], [f64; 2], [f64; 2])>,
+    start_s: Vec<f64>,
+    length: f64,
+}
+
+impl Path {
+    fn new(body: &Outline, arcs: &[Arc]) -> Path {
+        let mut path = Path {
+            edges: Vec::new(),
+            start_s: Vec::new(),
+            length: 0.0,
+        };
+        for &e in arcs.iter().flat_map(|a| &a.edges) {
+            let (a, b) = body.edge(e);
+            path.edges.push((a, b, body.normal(e)));
+            path.start_s.push(path.length);
+            path.length += (b[0] - a[0]).hypot(b[1] - a[1]);
         }
-        let whole = share(body, &arcs[k], 0.0, arcs[k].length);
-        let donor = (1..n)
-            .map(|d| (k + n - d) % n)
-            .find(|&m| !per_arc[m].is_empty());
-        if let Some(m) = donor {
-            if let Some(last) = per_arc[m].last_mut() {
-                last.share.add(&whole);
+        path
+    }
+
+    /// The integrals of w(s) (1, x, y, n, r × n) over [s0, s1] (s1 may pass the path's end once)
+    /// for the weight w linear from `w0` at s0 to `w1` at s1: Simpson's rule on each edge, exact
+    /// for the quadratic integrands.
+    fn share(&self, s0: f64, s1: f64, w0: f64, w1: f64) -> Share {
+        let mut out = Share::default();
+        if s1 <= s0 {
+            return out;
+        }
+        let weight = |s: f64| w0 + (w1 - w0) * (s - s0) / (s1 - s0);
+        for lap in [0.0, self.length] {
+            for (m, &(a, b, n)) in self.edges.iter().enumerate() {
+                let len_e = (b[0] - a[0]).hypot(b[1] - a[1]);
+                let ea = self.start_s[m] + lap;
+                let (lo, hi) = (s0.max(ea), s1.min(ea + len_e));
+                if hi <= lo || len_e == 0.0 {
+                    continue;
+                }
+                let point = |s: f64| {
+                    let t = (s - ea) / len_e;
+                    [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+                };
+                let simpson = |f: &dyn Fn([f64; 2]) -> f64| {
+                    let mid = 0.5 * (lo + hi);
+                    (hi - lo) / 6.0
+                        * (weight(lo) * f(point(lo))
+                            + 4.0 * weight(mid) * f(point(mid))
+                            + weight(hi) * f(point(hi)))
+                };
+                let len = simpson(&|_| 1.0);
+                out.add(&Share {
+                    len,
+                    int_x: simpson(&|r| r[0]),
+                    int_y: simpson(&|r| r[1]),
+                    n: [len * n[0], len * n[1]],
+                    r_cross_n: simpson(&|r| r[0] * n[1] - r[1] * n[0]),
+                });
             }
         }
+        out
     }
-    per_arc.into_iter().flatten().collect()
 }

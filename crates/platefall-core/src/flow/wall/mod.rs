@@ -64,7 +64,7 @@ impl Wall {
         let lines = Lines::new(grid, body);
         let faces = Faces::new(grid, body, &lines, tol);
         let stencils = Stencils::new(grid, body, m, &lines, (&faces.u_open, &faces.v_open), nu);
-        let loads = Loads::new(grid, body, &lines, &faces, tol);
+        let loads = Loads::new(grid, body, &lines, (&faces, &stencils.forced), tol);
         Wall {
             faces,
             stencils,
