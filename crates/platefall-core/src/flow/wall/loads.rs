@@ -14,10 +14,12 @@
 //!   for a quadratic through w = 0 at the wall, (w₁d₂² − w₂d₁²)/(d₁d₂(d₂ − d₁)), divided by
 //!   n·e (e: the line's direction into the fluid; |n·e| ≥ 1/√2 by the choice of family).
 //!
-//! Each sample stands for the part of its arc nearer to it than to its neighbours, and the
-//! integrals of n, r × n, x and y over that part are exact (the outline is a polygon), so the
-//! sums are the midpoint rule of the load integrals: F = ∫(−p n + μ a) ds, M = ∫ r × (−p n + μ a) ds.
-//! A velocity point closer to the wall than half a spacing is a forced point (`stencils`), a
+//! Between neighbouring samples the wall value is interpolated linearly in arc length (hat
+//! weights), and held constant from the last sample to a corner; the integrals of the weights
+//! times 1, n, r × n, x and y along the polygon are exact, so the sums are the trapezoidal rule of
+//! the load integrals: F = ∫(−p n + μ a) ds, M = ∫ r × (−p n + μ a) ds (`tests/wall_loads.rs`
+//! measures their order against manufactured fields).
+//! A velocity point closer to the wall than half a spacing is a forced point (`stencils`): a
 //! straight line between the wall and the next point: it adds nothing to the quadratic but would
 //! amplify the projection's change of it by the spacing over its distance, so the velocity samples
 //! start at the next point. Where the line holds only one usable point (a gap narrower than two
