@@ -14,10 +14,18 @@ fn fmt_opt(x: Option<f64>, digits: usize) -> String {
         .unwrap_or_else(|| "—".into())
 }
 
+/// Means and half-widths both below this are round-off.
+const ROUND_OFF: f64 = 1e-9;
+
 /// `value ± half-width` when the value has a 95 % interval (the half-width to two significant
 /// digits, the value to the same decimal place), else the value as `fmt_opt` gives it.
 pub fn pm(x: Option<f64>, half_width: Option<f64>, digits: usize) -> String {
     match (x, half_width) {
+        // A mean that vanishes by symmetry (the lift of a section at zero incidence) is zero to
+        // round-off, interval included: its twelve decimals would say nothing.
+        (Some(v), Some(hw)) if v.abs() < ROUND_OFF && hw.abs() < ROUND_OFF => {
+            format!("{:.digits$} ± 0", 0.0)
+        }
         (Some(v), Some(hw)) if hw.is_finite() && hw > 0.0 => {
             // Two significant digits of the half-width, at least `digits` decimals.
             let d = (1.0 - hw.log10().floor()).max(digits as f64).min(12.0) as usize;
