@@ -8,12 +8,14 @@ use std::time::{Duration, Instant};
 use anyhow::Context as _;
 use crossbeam_channel::{bounded, Receiver, RecvTimeoutError, Sender, TrySendError};
 
+use super::cadence::Cadence;
 use super::csv::CsvWriter;
-use super::messages::{ConnectReport, Message, RecordingError, RunInfo, RunOutcome};
+use super::messages::{ConnectReport, FieldUse, Message, RecordingError, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::output::{LinkCheck, OutputError};
 use super::progress::Progress;
 use super::viewer::{LiveServer, Viewer};
+use super::vtk::{VtkReport, VtkSeries};
 use platefall_core::sim::{FieldSnapshot, RunStatus, StepSample};
 
 /// State shared by the solver-side handle and the logger thread.
@@ -39,8 +41,10 @@ pub struct Logger {
     tx: Option<Sender<Message>>,
     thread: Option<JoinHandle<anyhow::Result<LoggerReport>>>,
     shared: Arc<Shared>,
-    field_every: f64,
-    next_field_t: f64,
+    fields: Cadence,
+    vtk: Option<Cadence>,
+    /// What the snapshot asked for by the last true [`Logger::field_due`] is for.
+    due: FieldUse,
     max_fields_in_flight: usize,
 }
 
@@ -56,6 +60,8 @@ pub struct LoggerReport {
     pub rrd: Option<(PathBuf, u64)>,
     /// The CSV file and its number of data rows.
     pub csv: Option<(PathBuf, u64)>,
+    /// The VTK series (`--vtk`): its collection, snapshots and bytes.
+    pub vtk: Option<VtkReport>,
     /// URL of the --serve server.
     pub serve_url: Option<String>,
     pub connect: Option<ConnectReport>,
@@ -77,6 +83,7 @@ impl std::fmt::Debug for LoggerReport {
             .field("fields_skipped", &self.fields_skipped)
             .field("rrd", &self.rrd)
             .field("csv", &self.csv)
+            .field("vtk", &self.vtk)
             .field("serve_url", &self.serve_url)
             .field("connect", &self.connect)
             .field("notes", &self.notes)
@@ -113,6 +120,14 @@ impl LoggerReport {
         }
         if let Some((path, rows)) = &self.csv {
             out.push(format!("csv: {} ({rows} rows)", path.display()));
+        }
+        if let Some(v) = &self.vtk {
+            out.push(format!(
+                "vtk: {} ({} snapshots, {:.1} MB)",
+                v.pvd.display(),
+                v.snapshots,
+                v.bytes as f64 / 1e6
+            ));
         }
         if let Some(url) = &self.serve_url {
             out.push(format!("served at {url}"));
@@ -169,6 +184,13 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         None => None,
     };
     let csv_link = csv.as_ref().map(CsvWriter::link_check);
+    if let Some(v) = opts.vtk.as_ref().filter(|v| !(v.every.is_finite() && v.every > 0.0)) {
+        anyhow::bail!("--vtk-every {}: must be a finite number > 0", v.every);
+    }
+    let vtk = match &opts.vtk {
+        Some(v) => Some(VtkSeries::create(v, &info)?),
+        None => None,
+    };
     let viewer = if opts.has_rerun_sink() {
         Some(Viewer::open(&opts, &info)?)
     } else {
@@ -177,6 +199,7 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
     let (tx, rx) = bounded(opts.channel_capacity.max(2));
     let shared = Arc::new(Shared::default());
     let (field_every, max_fields_in_flight) = (opts.field_every, opts.max_fields_in_flight);
+    let vtk_every = opts.vtk.as_ref().map(|v| v.every);
     let thread = LoggerThread {
         rx,
         shared: shared.clone(),
@@ -185,6 +208,7 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         opts,
         csv,
         csv_link,
+        vtk,
         viewer,
         steps: 0,
         fields: 0,
@@ -199,8 +223,9 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         tx: Some(tx),
         thread: Some(thread),
         shared,
-        field_every,
-        next_field_t: f64::NEG_INFINITY,
+        fields: Cadence::new(field_every),
+        vtk: vtk_every.map(Cadence::new),
+        due: FieldUse::default(),
         max_fields_in_flight,
     })
 }
@@ -208,21 +233,18 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
 impl Logger {
     /// Convective time between field snapshots (`--field-every`).
     pub fn field_every(&self) -> f64 {
-        self.field_every
+        self.fields.every()
     }
 
-    /// The field cadence: true if a snapshot is due at simulated time `t` (the first call always
-    /// is; then at every multiple of `field_every`). A true answer advances the cadence, so ask
-    /// once per step and, when true, build a snapshot and [`offer_field`](Self::offer_field) it.
+    /// The field cadences: true if a snapshot is due at simulated time `t`, for the recording
+    /// (the first call always is; then at every multiple of `field_every`) or for `--vtk` (at
+    /// every multiple of its interval). A true answer advances the cadences, so ask once per
+    /// step and, when true, build a snapshot and [`offer_field`](Self::offer_field) it.
     pub fn field_due(&mut self, t: f64) -> bool {
-        let fe = self.field_every;
-        let eps = 1e-9 * fe.max(1.0);
-        if t + eps >= self.next_field_t {
-            self.next_field_t = ((t + eps) / fe).floor() * fe + fe;
-            true
-        } else {
-            false
-        }
+        let viewer = self.fields.due(t);
+        let vtk = self.vtk.as_mut().is_some_and(|c| c.due(t));
+        self.due = FieldUse { viewer, vtk };
+        viewer || vtk
     }
 
     /// Sends one step (blocking when the channel is full: time series are never dropped).
@@ -252,7 +274,7 @@ impl Logger {
             return skip();
         }
         self.shared.fields_in_flight.fetch_add(1, Ordering::AcqRel);
-        match tx.try_send(Message::Field(Box::new(snapshot))) {
+        match tx.try_send(Message::Field(Box::new(snapshot), self.due)) {
             Ok(()) => true,
             Err(TrySendError::Full(_)) | Err(TrySendError::Disconnected(_)) => {
                 self.shared.fields_in_flight.fetch_sub(1, Ordering::AcqRel);
@@ -325,6 +347,7 @@ struct LoggerThread {
     progress: Progress,
     csv: Option<CsvWriter>,
     csv_link: Option<LinkCheck>,
+    vtk: Option<VtkSeries>,
     viewer: Option<Viewer>,
     serve_url: Option<String>,
     steps: u64,
@@ -364,7 +387,7 @@ impl LoggerThread {
     fn handle(&mut self, msg: Message) -> Option<RunOutcome> {
         match msg {
             Message::Step(s) => self.step(s),
-            Message::Field(f) => self.field(&f),
+            Message::Field(f, due) => self.field(&f, due),
             Message::Finish(o) => return Some(o),
         }
         None
@@ -422,8 +445,17 @@ impl LoggerThread {
         }
     }
 
-    fn field(&mut self, f: &FieldSnapshot) {
+    fn field(&mut self, f: &FieldSnapshot, due: FieldUse) {
         self.shared.fields_in_flight.fetch_sub(1, Ordering::AcqRel);
+        if due.vtk {
+            if let Some(Err(e)) = self.vtk.as_mut().map(|v| v.write(f)) {
+                self.vtk = None; // what was written stays listed in its collection
+                self.fail(e);
+            }
+        }
+        if !due.viewer {
+            return;
+        }
         let skipped = self.shared.fields_skipped.load(Ordering::Relaxed);
         match self.viewer.as_mut().map(|v| v.field(f, skipped)) {
             Some(Ok(false)) => {}
@@ -473,6 +505,7 @@ impl LoggerThread {
             fields_skipped: skipped,
             rrd,
             csv,
+            vtk: self.vtk.as_ref().map(VtkSeries::report),
             serve_url: self.serve_url,
             connect,
             notes,
