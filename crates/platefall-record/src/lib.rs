@@ -152,10 +152,10 @@ mod progress;
 pub mod view_options;
 #[cfg(feature = "viewer")]
 pub mod viewer;
-pub mod vtk;
 #[cfg(not(feature = "viewer"))]
 #[path = "viewer_off.rs"]
 pub mod viewer;
+pub mod vtk;
 
 pub use cadence::Cadence;
 pub use csv::{CSV_HEADER, CSV_TRAILER};

@@ -184,7 +184,11 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         None => None,
     };
     let csv_link = csv.as_ref().map(CsvWriter::link_check);
-    if let Some(v) = opts.vtk.as_ref().filter(|v| !(v.every.is_finite() && v.every > 0.0)) {
+    if let Some(v) = opts
+        .vtk
+        .as_ref()
+        .filter(|v| !(v.every.is_finite() && v.every > 0.0))
+    {
         anyhow::bail!("--vtk-every {}: must be a finite number > 0", v.every);
     }
     let vtk = match &opts.vtk {

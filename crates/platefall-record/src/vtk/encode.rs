@@ -46,7 +46,12 @@ impl Appended {
     pub fn f64s(&mut self, name: &str, components: usize, values: &[f64]) -> String {
         self.raw.clear();
         self.raw.extend(values.iter().flat_map(|v| v.to_le_bytes()));
-        self.push(name, Scalar::F64, components, values.len() / components.max(1))
+        self.push(
+            name,
+            Scalar::F64,
+            components,
+            values.len() / components.max(1),
+        )
     }
 
     /// Appends `values` (i64, little-endian) and returns their tag.
