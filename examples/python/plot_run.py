@@ -78,7 +78,8 @@ def plot_phase(results_path, value, out):
         fig.colorbar(sc, ax=ax, label=value)
     ax.set_xlabel(x)
     ax.set_ylabel(y or "")
-    ax.legend(title="regime", fontsize="small")
+    if (regimes.astype(object).fillna("") != "").any():
+        ax.legend(title="regime", fontsize="small")
     fig.tight_layout()
     fig.savefig(out / "phase.png", dpi=120)
     plt.close(fig)
