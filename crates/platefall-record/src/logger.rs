@@ -43,7 +43,8 @@ pub struct Logger {
     shared: Arc<Shared>,
     fields: Cadence,
     vtk: Option<Cadence>,
-    /// What the snapshot asked for by the last true [`Logger::field_due`] is for.
+    /// What a snapshot offered now is for: as the last [`Logger::field_due`] decided (the
+    /// recording only before the first).
     due: FieldUse,
     max_fields_in_flight: usize,
 }
@@ -229,7 +230,11 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         shared,
         fields: Cadence::new(field_every),
         vtk: vtk_every.map(Cadence::new),
-        due: FieldUse::default(),
+        // A snapshot offered without asking `field_due` first is for the recording.
+        due: FieldUse {
+            viewer: true,
+            vtk: false,
+        },
         max_fields_in_flight,
     })
 }
@@ -264,12 +269,18 @@ impl Logger {
         }
     }
 
-    /// Offers a field snapshot without blocking. Returns false (and counts it as skipped) when
-    /// the logger is behind: the channel is full or `max_fields_in_flight` snapshots are queued.
+    /// Offers a field snapshot. A snapshot for the recording only is offered without blocking:
+    /// false (and counted as skipped) when the logger is behind, the channel full or
+    /// `max_fields_in_flight` snapshots queued. One due for `--vtk` is never skipped: this waits
+    /// until fewer than `max_fields_in_flight` are queued (the files are what was asked for; the
+    /// memory stays bounded), and returns false only if the logger has stopped or an output failed.
     pub fn offer_field(&self, snapshot: FieldSnapshot) -> bool {
         let Some(tx) = self.tx.as_ref() else {
             return false;
         };
+        if self.due.vtk {
+            return self.send_field_waiting(tx, snapshot);
+        }
         let skip = || {
             self.shared.fields_skipped.fetch_add(1, Ordering::Relaxed);
             false
@@ -285,6 +296,30 @@ impl Logger {
                 skip()
             }
         }
+    }
+
+    /// Sends a snapshot once fewer than `max_fields_in_flight` are queued (see `offer_field`).
+    fn send_field_waiting(&self, tx: &Sender<Message>, snapshot: FieldSnapshot) -> bool {
+        let stopped = || {
+            self.shared.failed.load(Ordering::SeqCst)
+                || self.thread.as_ref().is_none_or(JoinHandle::is_finished)
+        };
+        while self.shared.fields_in_flight.load(Ordering::Acquire) >= self.max_fields_in_flight {
+            if stopped() {
+                self.shared.fields_skipped.fetch_add(1, Ordering::Relaxed);
+                return false;
+            }
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        self.shared.fields_in_flight.fetch_add(1, Ordering::AcqRel);
+        let sent = tx
+            .send(Message::Field(Box::new(snapshot), self.due))
+            .is_ok();
+        if !sent {
+            self.shared.fields_in_flight.fetch_sub(1, Ordering::AcqRel);
+            self.shared.fields_skipped.fetch_add(1, Ordering::Relaxed);
+        }
+        sent
     }
 
     /// The first output that could not be written, if any (one line).

@@ -15,8 +15,9 @@
 //!
 //! Every array is Float64 (UInt8 masks, Int64 indices), zlib-compressed in appended binary
 //! blocks ([`encode`]). The snapshots come at their own cadence (`--vtk-every`, by default the
-//! recording's field cadence) over the same channel as the recording's, and, like them, may be
-//! thinned when the logger falls behind (counted in the recording's skipped snapshots).
+//! recording's field cadence) over the same channel as the recording's. Unlike the recording's
+//! pictures they are never thinned: when the logger is behind, the solver waits until fewer
+//! than `max_fields_in_flight` snapshots are queued (`Logger::offer_field`).
 pub mod documents;
 pub mod encode;
 pub mod sample;
