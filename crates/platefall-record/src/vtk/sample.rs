@@ -151,3 +151,43 @@ pub fn placed_outline(section: &Outline, pose: &Pose) -> Vec<f64> {
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn nodes_on_a_rectangle_fitted_to_grid_lines_are_on_the_plate() {
+        let grid = GridGeometry {
+            xn: vec![-1.0, -0.5, 0.0, 0.5, 1.0],
+            yn: vec![-1.0, -0.25, 0.25, 1.0],
+            solid: vec![
+                false, true, true, false, false, false, false, false, false, false, false, false,
+            ],
+        };
+        let plate = Outline::new(vec![[-0.5, -0.25], [0.5, -0.25], [0.5, 0.25], [-0.5, 0.25]]);
+        let on = nodes_on_plate(&grid, &plate);
+        let expected: Vec<u8> = (0..4)
+            .flat_map(|j| {
+                (0..5).map(move |i| u8::from((1..=3).contains(&i) && (1..=2).contains(&j)))
+            })
+            .collect();
+        assert_eq!(on, expected);
+    }
+
+    #[test]
+    fn a_node_value_lies_on_the_line_between_its_two_centres() {
+        let centres = [0.0, 1.0, 3.0];
+        let value = |k: usize| [10.0, 20.0, 40.0][k];
+        assert_eq!(between(&centres, 0, -0.5, value), 10.0);
+        assert_eq!(between(&centres, 2, 2.0, value), 30.0);
+        assert_eq!(between(&centres, 3, 3.5, value), 40.0);
+        let pose = Pose {
+            x: 1.0,
+            y: 2.0,
+            theta: std::f64::consts::FRAC_PI_2,
+        };
+        let [x, y] = pose.place(1.0, 0.0);
+        assert!((x - 1.0).abs() < 1e-15 && (y - 3.0).abs() < 1e-15);
+    }
+}
