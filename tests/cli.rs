@@ -114,6 +114,26 @@ fn bad_values_are_refused_naming_the_value_and_range() {
     .into_iter()
     .map(|(a, n)| (a.replace("PLATE", PLATE), n))
     .collect();
+    // --vtk names a directory: not a file, not one that cannot be written (even by root: /proc).
+    let file = dir.join("not-a-dir");
+    std::fs::write(&file, "x").unwrap();
+    let mut cases = cases;
+    cases.extend([
+        (
+            format!("static --vtk {}", file.display()),
+            "exists and is not a directory",
+        ),
+        (
+            "static --vtk /proc/self".into(),
+            "--vtk /proc/self: directory",
+        ),
+        ("static --vtk /nonexistent-dir/v".into(), "/nonexistent-dir"),
+        (
+            format!("static --vtk {} --vtk-every 0", dir.display()),
+            "--vtk-every 0: must be",
+        ),
+        ("static --vtk-every 1".into(), "required arguments"),
+    ]);
     for (line, needle) in &cases {
         let args: Vec<&str> = line.split_whitespace().collect();
         let mut full: Vec<&str> = args.clone();

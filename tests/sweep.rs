@@ -82,7 +82,8 @@ fn point_labels(d: &record_common::Decoded, entity: &str) -> Vec<String> {
 fn four_cases_run_two_at_a_time_into_four_rows() {
     let dir = scratch("four");
     let fixed = "t-end = 2\nfield-every = 1.0\nfield-res = 32\n";
-    let body = FOUR_STATIC.replace("t-end = 2\n", fixed) + "[outputs]\nrecording = true\n";
+    let outputs = "[outputs]\nrecording = true\nvtk = true\n";
+    let body = FOUR_STATIC.replace("t-end = 2\n", fixed) + outputs;
     let p = plan(&dir, &body);
     let out = sweep(&[p.to_str().unwrap(), "--jobs", "2"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
@@ -114,6 +115,10 @@ fn four_cases_run_two_at_a_time_into_four_rows() {
         let rrd = format!("cases/{}/run.rrd", r["id"].as_str().unwrap());
         assert_eq!(r["recording"], rrd.as_str());
         assert!(out_dir.join(&rrd).is_file());
+        // [outputs] vtk: the case's VTK series in its directory (field-every = 1: t = 0.01, 1, 2).
+        let pvd = out_dir.join(format!("cases/{}/vtk/run.pvd", r["id"].as_str().unwrap()));
+        let pvd = std::fs::read_to_string(&pvd).expect("the case's run.pvd");
+        assert_eq!(pvd.matches("<DataSet ").count(), 2 * 3, "{pvd}");
     }
     // The Rerun phase diagram: finalised, one entity per case, labelled with its recording.
     let d = record_common::decode(&out_dir.join("phase.rrd"));

@@ -30,6 +30,14 @@ use command::Command;
 use platefall_record::output::OutputError;
 
 pub use command::{parse, Cli};
+
+/// The run a case's argument vector describes (`args` without the program name, e.g.
+/// `["free", "--resolution", "16"]`), parsed and validated exactly as the command line does it:
+/// for reproducing a run in-process (the tests compare its fields with the files a run wrote).
+pub fn case_config(args: &[String]) -> Result<platefall_core::sim::ValidatedConfig, String> {
+    use crate::sweep::CaseCommands as _;
+    sweep_cases::CommandLineCases.config(args).map_err(|e| e.0)
+}
 #[cfg(test)]
 pub(crate) use sweep_cases::CommandLineCases;
 

@@ -6,13 +6,14 @@ use std::path::{Path, PathBuf};
 
 use platefall_core::sim::CaseKind;
 use platefall_post::{FieldWindow, StreamFrame};
-use platefall_record::files::{check_outputs, OutputPath};
+use platefall_record::files::{check_directory, check_outputs, OutputPath};
 use platefall_record::options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
     DEFAULT_PORT, FIELD_RES_RANGE,
 };
 use platefall_record::view_options::{ViewOptions, DEFAULT_WAKE_RES};
 use platefall_record::viewer;
+use platefall_record::vtk::{VtkOptions, COLLECTION};
 
 /// How progress is shown on stderr.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
@@ -122,6 +123,16 @@ pub struct RecordArgs {
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
 
+    /// Also write the flow for ParaView into DIR: one .vts (the grid at the plate's pose:
+    /// velocity, pressure, vorticity, stream function) and one .vtp (the plate) per snapshot, and
+    /// DIR/run.pvd listing them by time (DIR is created if its parent exists)
+    #[arg(long, value_name = "DIR")]
+    pub vtk: Option<PathBuf>,
+
+    /// Convective time (c/U) between VTK snapshots [default: the field cadence, --field-every]
+    #[arg(long, value_name = "T", requires = "vtk")]
+    pub vtk_every: Option<f64>,
+
     /// No progress output
     #[arg(long, short = 'q')]
     pub quiet: bool,
@@ -144,6 +155,8 @@ pub enum OptionsError {
     WakeWindow(String),
     #[error("--wake-res {0}: must be in {lo}..={hi} pixels", lo = FIELD_RES_RANGE.start(), hi = FIELD_RES_RANGE.end())]
     WakeRes(usize),
+    #[error("--vtk-every {0}: must be a finite number > 0 (convective time units between VTK snapshots)")]
+    VtkEvery(f64),
     #[error("--streamlines-frame {0}: must be 1, 2, 3 or 4 (1 plate-fixed, 2 fluid-fixed, 3 translating, 4 rotating)")]
     StreamlinesFrame(u8),
     #[error("--server-memory-limit {value:?}: {reason}; accepted: a share of RAM like \"25%\", a size like \"2GB\", or \"unlimited\"")]
@@ -199,7 +212,16 @@ impl RecordArgs {
             return Err(OptionsError::NoViewer);
         }
         let save = self.save_path(case)?;
-        self.check_paths(save.as_deref(), others)?;
+        let vtk = self.vtk_options(fields.every)?;
+        let collection = vtk.as_ref().map(|v| v.dir.join(COLLECTION));
+        let mut others = others.to_vec();
+        if let Some(pvd) = collection
+            .as_deref()
+            .filter(|p| p.parent().is_some_and(Path::is_dir))
+        {
+            others.push(("--vtk", pvd));
+        }
+        self.check_paths(save.as_deref(), &others)?;
         let csv = self.csv.clone();
         let progress = if self.quiet {
             ProgressMode::Off
@@ -217,6 +239,7 @@ impl RecordArgs {
             streamlines_frame: fields.frame,
             view: fields.view,
             csv,
+            vtk,
             progress,
             ..RecordOptions::default()
         })
@@ -266,6 +289,23 @@ impl RecordArgs {
                 wake_res,
             },
         })
+    }
+
+    /// `--vtk DIR`: an existing writable directory, or a new one in an existing writable
+    /// directory; `--vtk-every` (default `field_every`) a finite number > 0.
+    fn vtk_options(&self, field_every: f64) -> Result<Option<VtkOptions>, OptionsError> {
+        let Some(dir) = &self.vtk else {
+            return Ok(None);
+        };
+        let every = self.vtk_every.unwrap_or(field_every);
+        if !(every.is_finite() && every > 0.0) {
+            return Err(OptionsError::VtkEvery(every));
+        }
+        check_directory(dir).map_err(|reason| path_error("--vtk", dir, reason.to_string()))?;
+        Ok(Some(VtkOptions {
+            dir: dir.clone(),
+            every,
+        }))
     }
 
     /// Without the `viewer` feature only --no-save runs (CSV, summary) are possible.

@@ -11,7 +11,7 @@ use crate::sweep::{self, SlurmOverrides, SweepRequest};
 const AFTER_HELP: &str = "\
 A plan names a case, its fixed options ([fixed]), the swept ones ([grid]: every combination; [zip]: \
 advanced together; lists [a, b] or ranges { from = A, to = B, count = N, scale = \"log\" }), the \
-output directory, [outputs] recording, the [diagram] axes and value, and [slurm] resources. See \
+output directory, [outputs] recording and vtk, the [diagram] axes and value, and [slurm] resources. See \
 examples/sweep-static.toml and docs/user-guide.md, \"Parameter sweeps\".
 
 A case is done when DIR/cases/<id>/summary.json says completed or diverged; rerunning the plan runs \

@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 use super::clock::{hostname, unix_seconds, utc};
 use super::failure::Failure;
 use super::layout::Layout;
-use super::plan::CaseSpec;
+use super::plan::{CaseSpec, Outputs};
 use platefall_core::sim::StatusKind;
 use platefall_record::output::{write_atomically, OutputError};
 
@@ -77,16 +77,19 @@ pub(crate) fn is_done(layout: &Layout, id: &str) -> bool {
 }
 
 /// The full argument vector of a case: its options plus the outputs the sweep manages.
-pub(crate) fn full_args(layout: &Layout, case: &CaseSpec, recording: bool) -> Vec<String> {
+pub(crate) fn full_args(layout: &Layout, case: &CaseSpec, outputs: Outputs) -> Vec<String> {
     let path = |p: std::path::PathBuf| p.to_string_lossy().into_owned();
     let mut args = case.args.clone();
     args.push(format!("--summary={}", path(layout.summary(&case.id))));
     args.push(format!("--csv={}", path(layout.csv(&case.id))));
     args.push("--progress=off".into());
-    if recording {
+    if outputs.recording {
         args.push(format!("--save={}", path(layout.recording(&case.id))));
     } else {
         args.push("--no-save".into());
+    }
+    if outputs.vtk {
+        args.push(format!("--vtk={}", path(layout.vtk(&case.id))));
     }
     args
 }
@@ -107,7 +110,7 @@ pub(crate) fn launch(
     exe: &Path,
     layout: &Layout,
     case: &CaseSpec,
-    recording: bool,
+    outputs: Outputs,
 ) -> std::io::Result<Running> {
     let id = &case.id;
     std::fs::create_dir_all(layout.case_dir(id))?;
@@ -116,7 +119,7 @@ pub(crate) fn launch(
         _ => {}
     }
     let attempt = read_status(layout, id).map_or(1, |s| s.attempt + 1);
-    let args = full_args(layout, case, recording);
+    let args = full_args(layout, case, outputs);
     let mut log = OpenOptions::new()
         .create(true)
         .append(true)

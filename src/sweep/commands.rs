@@ -142,12 +142,11 @@ pub(crate) fn local(
     );
     let presses = interrupt_counter()?;
     let mut progress = Progress::new(progress_mode, cases.len(), done);
-    let recording = plan.outputs.recording;
     let interrupted = run_pool(
         &exe,
         layout,
         &todo,
-        recording,
+        plan.outputs,
         jobs,
         &mut progress,
         &presses,
@@ -232,7 +231,7 @@ fn run_case(dir: &Path, index: usize, commands: &dyn CaseCommands) -> Result<Exi
     }
     let presses = interrupt_counter()?;
     let exe = this_exe()?;
-    let mut running = launch(&exe, &layout, case, manifest.recording)
+    let mut running = launch(&exe, &layout, case, manifest.outputs())
         .map_err(|e| Failure::output(format!("{}: could not start: {e}", case.id)))?;
     let mut forwarded = 0;
     let exit = loop {

@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use super::clock::hostname;
 use super::failure::{write_output, Failure};
-use super::plan::{CaseSpec, Plan};
+use super::plan::{CaseSpec, Outputs, Plan};
 use platefall_core::sim::CaseKind;
 
 /// Version of `sweep.json`.
@@ -36,6 +36,9 @@ impl Layout {
     }
     pub(crate) fn recording(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("run.rrd")
+    }
+    pub(crate) fn vtk(&self, id: &str) -> PathBuf {
+        self.case_dir(id).join("vtk")
     }
     pub(crate) fn log(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("log.txt")
@@ -66,6 +69,9 @@ pub(crate) struct Manifest {
     pub(crate) name: String,
     pub(crate) case: CaseKind,
     pub(crate) recording: bool,
+    /// `[outputs] vtk` (absent in manifests written before it existed: false).
+    #[serde(default)]
+    pub(crate) vtk: bool,
     pub(crate) cases: Vec<CaseSpec>,
 }
 
@@ -76,7 +82,16 @@ impl Manifest {
             name: plan.name.clone(),
             case: plan.case,
             recording: plan.outputs.recording,
+            vtk: plan.outputs.vtk,
             cases: cases.to_vec(),
+        }
+    }
+
+    /// The per-case outputs the plan asked for.
+    pub(crate) fn outputs(&self) -> Outputs {
+        Outputs {
+            recording: self.recording,
+            vtk: self.vtk,
         }
     }
 }
@@ -103,6 +118,12 @@ pub(crate) fn difference(old: &Manifest, new: &Manifest) -> Option<String> {
         return Some(format!(
             "[outputs] recording = {} there, {} here",
             old.recording, new.recording
+        ));
+    }
+    if old.vtk != new.vtk {
+        return Some(format!(
+            "[outputs] vtk = {} there, {} here",
+            old.vtk, new.vtk
         ));
     }
     if old.cases.len() != new.cases.len() {

@@ -8,7 +8,7 @@ use super::json;
 use super::plan::PlanError;
 
 /// Options the sweep sets itself for every case; a plan may not set them.
-pub(crate) const MANAGED: [&str; 12] = [
+pub(crate) const MANAGED: [&str; 13] = [
     "summary",
     "csv",
     "save",
@@ -21,6 +21,7 @@ pub(crate) const MANAGED: [&str; 12] = [
     "server-memory-limit",
     "connect",
     "spawn",
+    "vtk",
 ];
 
 /// One option of a case subcommand.

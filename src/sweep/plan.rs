@@ -24,12 +24,15 @@ macro_rules! plan_err {
 pub(crate) use plan_err;
 
 /// `[outputs]`: what each case writes besides its summary, CSV and log.
-#[derive(Clone, Debug, Default, Deserialize, Serialize, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, Deserialize, Serialize, PartialEq)]
 #[serde(deny_unknown_fields, rename_all = "kebab-case")]
 pub(crate) struct Outputs {
     /// Also write each case's Rerun recording, `cases/<id>/run.rrd`.
     #[serde(default)]
     pub(crate) recording: bool,
+    /// Also write each case's flow for ParaView, `cases/<id>/vtk/` (`--vtk`).
+    #[serde(default)]
+    pub(crate) vtk: bool,
 }
 
 /// `[diagram]` as written.

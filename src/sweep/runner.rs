@@ -9,7 +9,7 @@ use std::time::Duration;
 use super::child::{finish, interrupt, launch, launch_failed, Running};
 use super::failure::Failure;
 use super::layout::Layout;
-use super::plan::CaseSpec;
+use super::plan::{CaseSpec, Outputs};
 use super::progress::Progress;
 use super::results::outcome;
 use platefall_post::phase::CaseState;
@@ -33,7 +33,7 @@ pub(crate) fn run_pool(
     exe: &Path,
     layout: &Layout,
     todo: &[CaseSpec],
-    recording: bool,
+    outputs: Outputs,
     jobs: usize,
     progress: &mut Progress,
     presses: &AtomicUsize,
@@ -45,7 +45,7 @@ pub(crate) fn run_pool(
         let stop = presses.load(Ordering::SeqCst);
         while stop == 0 && running.len() < jobs.max(1) {
             let Some(case) = queue.next() else { break };
-            match launch(exe, layout, case, recording) {
+            match launch(exe, layout, case, outputs) {
                 Ok(r) => {
                     progress.started();
                     running.push(r);

@@ -22,6 +22,9 @@ pub enum PathRefusal {
     /// The path names a directory.
     #[error("is a directory")]
     IsADirectory,
+    /// The path names something other than a directory where a directory is wanted.
+    #[error("exists and is not a directory")]
+    ExistsNotADirectory,
     /// The path names something that is not a regular file (a FIFO, a device).
     #[error("exists and is not a regular file")]
     NotARegularFile,
@@ -76,6 +79,24 @@ pub fn check_writable(path: &Path, create_dir: bool) -> Result<(), PathRefusal> 
             .map_err(|e| PathRefusal::CannotOverwrite(e.to_string()))?;
     }
     Ok(())
+}
+
+/// Why `dir` cannot take a directory of outputs (`--vtk`): it exists and is not a directory, or
+/// no file can be created in it; or it does not exist and cannot be created in its parent
+/// (which must exist: only the last component is created, when the run starts).
+pub fn check_directory(dir: &Path) -> Result<(), PathRefusal> {
+    match std::fs::metadata(dir) {
+        Ok(m) if m.is_dir() => probe_directory(dir),
+        Ok(_) => Err(PathRefusal::ExistsNotADirectory),
+        Err(_) => {
+            let parent = directory_of(dir);
+            match std::fs::metadata(&parent) {
+                Ok(m) if m.is_dir() => probe_directory(&parent),
+                Ok(_) => Err(PathRefusal::NotADirectory(parent)),
+                Err(_) => Err(PathRefusal::NoDirectory(parent)),
+            }
+        }
+    }
 }
 
 /// The directory a path's file lives in ("." for a bare file name).

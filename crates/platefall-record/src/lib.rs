@@ -38,6 +38,10 @@
 //!   the file renamed into place, on every exit path but a kill, so `rerun rrd verify` passes on
 //!   every .rrd at a final name.
 //!
+//! - `--vtk DIR [--vtk-every T]`: the flow on the solver's grid, placed at the plate's pose, and
+//!   the plate's outline, one `.vts` and one `.vtp` per snapshot with a `.pvd` collection for
+//!   ParaView ([`vtk`]); written on the logger thread, each file atomically.
+//!
 //! # Outputs and failures
 //!
 //! Every output (recording, CSV, the summary the command line writes, a sweep's files and its
@@ -136,6 +140,7 @@
 //! - For a bug report (< 20 MB): `--field-every 0.5 --field-res 128` gives 17.7 MB for the default
 //!   free fall (57 snapshots; the 62.6k steps are 16 MB of it). Longer runs: also shorten
 //!   `--t-end` / `--turns`, since the per-step series dominate.
+pub mod cadence;
 mod csv;
 pub mod files;
 mod inject;
@@ -150,7 +155,9 @@ pub mod viewer;
 #[cfg(not(feature = "viewer"))]
 #[path = "viewer_off.rs"]
 pub mod viewer;
+pub mod vtk;
 
+pub use cadence::Cadence;
 pub use csv::{CSV_HEADER, CSV_TRAILER};
 pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use messages::ConnectReport;

@@ -8,12 +8,14 @@ use std::time::{Duration, Instant};
 use anyhow::Context as _;
 use crossbeam_channel::{bounded, Receiver, RecvTimeoutError, Sender, TrySendError};
 
+use super::cadence::Cadence;
 use super::csv::CsvWriter;
-use super::messages::{ConnectReport, Message, RecordingError, RunInfo, RunOutcome};
+use super::messages::{ConnectReport, FieldUse, Message, RecordingError, RunInfo, RunOutcome};
 use super::options::RecordOptions;
 use super::output::{LinkCheck, OutputError};
 use super::progress::Progress;
 use super::viewer::{LiveServer, Viewer};
+use super::vtk::{VtkReport, VtkSeries};
 use platefall_core::sim::{FieldSnapshot, RunStatus, StepSample};
 
 /// State shared by the solver-side handle and the logger thread.
@@ -39,8 +41,11 @@ pub struct Logger {
     tx: Option<Sender<Message>>,
     thread: Option<JoinHandle<anyhow::Result<LoggerReport>>>,
     shared: Arc<Shared>,
-    field_every: f64,
-    next_field_t: f64,
+    fields: Cadence,
+    vtk: Option<Cadence>,
+    /// What a snapshot offered now is for: as the last [`Logger::field_due`] decided (the
+    /// recording only before the first).
+    due: FieldUse,
     max_fields_in_flight: usize,
 }
 
@@ -56,6 +61,8 @@ pub struct LoggerReport {
     pub rrd: Option<(PathBuf, u64)>,
     /// The CSV file and its number of data rows.
     pub csv: Option<(PathBuf, u64)>,
+    /// The VTK series (`--vtk`): its collection, snapshots and bytes.
+    pub vtk: Option<VtkReport>,
     /// URL of the --serve server.
     pub serve_url: Option<String>,
     pub connect: Option<ConnectReport>,
@@ -77,6 +84,7 @@ impl std::fmt::Debug for LoggerReport {
             .field("fields_skipped", &self.fields_skipped)
             .field("rrd", &self.rrd)
             .field("csv", &self.csv)
+            .field("vtk", &self.vtk)
             .field("serve_url", &self.serve_url)
             .field("connect", &self.connect)
             .field("notes", &self.notes)
@@ -113,6 +121,14 @@ impl LoggerReport {
         }
         if let Some((path, rows)) = &self.csv {
             out.push(format!("csv: {} ({rows} rows)", path.display()));
+        }
+        if let Some(v) = &self.vtk {
+            out.push(format!(
+                "vtk: {} ({} snapshots, {:.1} MB)",
+                v.pvd.display(),
+                v.snapshots,
+                v.bytes as f64 / 1e6
+            ));
         }
         if let Some(url) = &self.serve_url {
             out.push(format!("served at {url}"));
@@ -169,6 +185,17 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         None => None,
     };
     let csv_link = csv.as_ref().map(CsvWriter::link_check);
+    if let Some(v) = opts
+        .vtk
+        .as_ref()
+        .filter(|v| !(v.every.is_finite() && v.every > 0.0))
+    {
+        anyhow::bail!("--vtk-every {}: must be a finite number > 0", v.every);
+    }
+    let vtk = match &opts.vtk {
+        Some(v) => Some(VtkSeries::create(v, &info)?),
+        None => None,
+    };
     let viewer = if opts.has_rerun_sink() {
         Some(Viewer::open(&opts, &info)?)
     } else {
@@ -177,6 +204,7 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
     let (tx, rx) = bounded(opts.channel_capacity.max(2));
     let shared = Arc::new(Shared::default());
     let (field_every, max_fields_in_flight) = (opts.field_every, opts.max_fields_in_flight);
+    let vtk_every = opts.vtk.as_ref().map(|v| v.every);
     let thread = LoggerThread {
         rx,
         shared: shared.clone(),
@@ -185,6 +213,7 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         opts,
         csv,
         csv_link,
+        vtk,
         viewer,
         steps: 0,
         fields: 0,
@@ -199,8 +228,13 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         tx: Some(tx),
         thread: Some(thread),
         shared,
-        field_every,
-        next_field_t: f64::NEG_INFINITY,
+        fields: Cadence::new(field_every),
+        vtk: vtk_every.map(Cadence::new),
+        // A snapshot offered without asking `field_due` first is for the recording.
+        due: FieldUse {
+            viewer: true,
+            vtk: false,
+        },
         max_fields_in_flight,
     })
 }
@@ -208,21 +242,18 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
 impl Logger {
     /// Convective time between field snapshots (`--field-every`).
     pub fn field_every(&self) -> f64 {
-        self.field_every
+        self.fields.every()
     }
 
-    /// The field cadence: true if a snapshot is due at simulated time `t` (the first call always
-    /// is; then at every multiple of `field_every`). A true answer advances the cadence, so ask
-    /// once per step and, when true, build a snapshot and [`offer_field`](Self::offer_field) it.
+    /// The field cadences: true if a snapshot is due at simulated time `t`, for the recording
+    /// (the first call always is; then at every multiple of `field_every`) or for `--vtk` (at
+    /// every multiple of its interval). A true answer advances the cadences, so ask once per
+    /// step and, when true, build a snapshot and [`offer_field`](Self::offer_field) it.
     pub fn field_due(&mut self, t: f64) -> bool {
-        let fe = self.field_every;
-        let eps = 1e-9 * fe.max(1.0);
-        if t + eps >= self.next_field_t {
-            self.next_field_t = ((t + eps) / fe).floor() * fe + fe;
-            true
-        } else {
-            false
-        }
+        let viewer = self.fields.due(t);
+        let vtk = self.vtk.as_mut().is_some_and(|c| c.due(t));
+        self.due = FieldUse { viewer, vtk };
+        viewer || vtk
     }
 
     /// Sends one step (blocking when the channel is full: time series are never dropped).
@@ -238,12 +269,18 @@ impl Logger {
         }
     }
 
-    /// Offers a field snapshot without blocking. Returns false (and counts it as skipped) when
-    /// the logger is behind: the channel is full or `max_fields_in_flight` snapshots are queued.
+    /// Offers a field snapshot. A snapshot for the recording only is offered without blocking:
+    /// false (and counted as skipped) when the logger is behind, the channel full or
+    /// `max_fields_in_flight` snapshots queued. One due for `--vtk` is never skipped: this waits
+    /// until fewer than `max_fields_in_flight` are queued (the files are what was asked for; the
+    /// memory stays bounded), and returns false only if the logger has stopped or an output failed.
     pub fn offer_field(&self, snapshot: FieldSnapshot) -> bool {
         let Some(tx) = self.tx.as_ref() else {
             return false;
         };
+        if self.due.vtk {
+            return self.send_field_waiting(tx, snapshot);
+        }
         let skip = || {
             self.shared.fields_skipped.fetch_add(1, Ordering::Relaxed);
             false
@@ -252,13 +289,37 @@ impl Logger {
             return skip();
         }
         self.shared.fields_in_flight.fetch_add(1, Ordering::AcqRel);
-        match tx.try_send(Message::Field(Box::new(snapshot))) {
+        match tx.try_send(Message::Field(Box::new(snapshot), self.due)) {
             Ok(()) => true,
             Err(TrySendError::Full(_)) | Err(TrySendError::Disconnected(_)) => {
                 self.shared.fields_in_flight.fetch_sub(1, Ordering::AcqRel);
                 skip()
             }
         }
+    }
+
+    /// Sends a snapshot once fewer than `max_fields_in_flight` are queued (see `offer_field`).
+    fn send_field_waiting(&self, tx: &Sender<Message>, snapshot: FieldSnapshot) -> bool {
+        let stopped = || {
+            self.shared.failed.load(Ordering::SeqCst)
+                || self.thread.as_ref().is_none_or(JoinHandle::is_finished)
+        };
+        while self.shared.fields_in_flight.load(Ordering::Acquire) >= self.max_fields_in_flight {
+            if stopped() {
+                self.shared.fields_skipped.fetch_add(1, Ordering::Relaxed);
+                return false;
+            }
+            std::thread::sleep(Duration::from_millis(1));
+        }
+        self.shared.fields_in_flight.fetch_add(1, Ordering::AcqRel);
+        let sent = tx
+            .send(Message::Field(Box::new(snapshot), self.due))
+            .is_ok();
+        if !sent {
+            self.shared.fields_in_flight.fetch_sub(1, Ordering::AcqRel);
+            self.shared.fields_skipped.fetch_add(1, Ordering::Relaxed);
+        }
+        sent
     }
 
     /// The first output that could not be written, if any (one line).
@@ -325,6 +386,7 @@ struct LoggerThread {
     progress: Progress,
     csv: Option<CsvWriter>,
     csv_link: Option<LinkCheck>,
+    vtk: Option<VtkSeries>,
     viewer: Option<Viewer>,
     serve_url: Option<String>,
     steps: u64,
@@ -364,7 +426,7 @@ impl LoggerThread {
     fn handle(&mut self, msg: Message) -> Option<RunOutcome> {
         match msg {
             Message::Step(s) => self.step(s),
-            Message::Field(f) => self.field(&f),
+            Message::Field(f, due) => self.field(&f, due),
             Message::Finish(o) => return Some(o),
         }
         None
@@ -422,8 +484,17 @@ impl LoggerThread {
         }
     }
 
-    fn field(&mut self, f: &FieldSnapshot) {
+    fn field(&mut self, f: &FieldSnapshot, due: FieldUse) {
         self.shared.fields_in_flight.fetch_sub(1, Ordering::AcqRel);
+        if due.vtk {
+            if let Some(Err(e)) = self.vtk.as_mut().map(|v| v.write(f)) {
+                self.vtk = None; // what was written stays listed in its collection
+                self.fail(e);
+            }
+        }
+        if !due.viewer {
+            return;
+        }
         let skipped = self.shared.fields_skipped.load(Ordering::Relaxed);
         match self.viewer.as_mut().map(|v| v.field(f, skipped)) {
             Some(Ok(false)) => {}
@@ -473,6 +544,7 @@ impl LoggerThread {
             fields_skipped: skipped,
             rrd,
             csv,
+            vtk: self.vtk.as_ref().map(VtkSeries::report),
             serve_url: self.serve_url,
             connect,
             notes,

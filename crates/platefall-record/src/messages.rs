@@ -72,9 +72,18 @@ pub struct RunOutcome {
 pub enum Message {
     /// Every step, never dropped.
     Step(StepSample),
-    /// A field snapshot, at the field cadence; may be thinned.
-    Field(Box<FieldSnapshot>),
+    /// A field snapshot, at the field cadences, and what it is for; may be thinned.
+    Field(Box<FieldSnapshot>, FieldUse),
     Finish(RunOutcome),
+}
+
+/// What a field snapshot is for: the recording's pictures, the VTK series, or both.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FieldUse {
+    /// Due at the recording's field cadence (`--field-every`).
+    pub viewer: bool,
+    /// Due at the VTK cadence (`--vtk-every`).
+    pub vtk: bool,
 }
 
 /// The Rerun recording stream failed: the scene stops recording (its outputs are reported), the

@@ -4,6 +4,7 @@ use std::net::{IpAddr, SocketAddr};
 use std::path::PathBuf;
 
 use super::view_options::ViewOptions;
+use super::vtk::VtkOptions;
 use platefall_post::{FieldWindow, StreamFrame};
 
 /// Default convective time between field snapshots (see the size budget in the crate docs (`lib.rs`)).
@@ -74,6 +75,8 @@ pub struct RecordOptions {
     pub streamlines_frame: StreamFrame,
     /// Per-step CSV output.
     pub csv: Option<PathBuf>,
+    /// The VTK series for ParaView (`--vtk DIR`).
+    pub vtk: Option<VtkOptions>,
     /// How progress is shown on stderr.
     pub progress: ProgressMode,
     /// Capacity of the solver → logger channel in messages.
@@ -98,6 +101,7 @@ impl Default for RecordOptions {
             field_window: FieldWindow::default(),
             streamlines_frame: StreamFrame::default(),
             csv: None,
+            vtk: None,
             progress: ProgressMode::Off,
             channel_capacity: 1024,
             max_fields_in_flight: 4,
