@@ -18,6 +18,7 @@ mod flags;
 mod limits;
 mod plate_args;
 mod record_args;
+mod resume;
 mod run;
 mod shape_args;
 mod signals;
@@ -44,6 +45,7 @@ pub fn main() -> ExitCode {
         Command::Bench(args) => bench_args::run_bench(args).map(|()| Exit::Completed),
         Command::Sweep(args) => return sweep_args::run(args).into(),
         Command::Converge(args) => return converge_args::run(args).into(),
+        Command::Resume(args) => resume::run_resume(args),
         cmd => run::run_case(cmd),
     };
     match result {
