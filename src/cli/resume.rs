@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use anyhow::Context as _;
 use clap::Args;
 
+use super::args::CheckpointArgs;
 use super::checkpointer::Checkpointer;
 use super::command::{parse, Command};
 use super::config::run_config;
@@ -26,7 +27,7 @@ pub struct ResumeArgs {
     /// The checkpoint file (written by --checkpoint-every or at a stop)
     pub file: PathBuf,
     /// A new end time (later than the checkpoint's time) [default: the run's]
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub t_end: Option<f64>,
     /// A new number of net turns after release [default: the run's]
     #[arg(long, value_name = "N")]
@@ -50,7 +51,7 @@ pub struct ResumeArgs {
     #[arg(long, short = 'q')]
     pub quiet: bool,
     /// Checkpoint cadence [default: the run's]
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub checkpoint_every: Option<f64>,
     /// The checkpoint file to write [default: the one resumed from]
     #[arg(long, value_name = "FILE")]
@@ -75,12 +76,10 @@ pub enum ResumeRefusal {
     #[error("checkpoint {}: its command line now builds another run than the checkpoint holds (a file it reads changed, or run it from the directory it was started in)", .0.display())]
     ConfigChanged(PathBuf),
     /// The run would already be over under the end asked for.
-    #[error("{flag} {value}: the checkpoint is at t = {t:.4}; the run would already be over (give a later --t-end or more --turns)")]
+    #[error("{end}: the checkpoint is at t = {t:.4}; the run would already be over (give a later --t-end or more --turns)")]
     AlreadyOver {
-        /// The option.
-        flag: &'static str,
-        /// Its value.
-        value: f64,
+        /// The end, e.g. "--t-end 3" or "the run's end".
+        end: String,
         /// The checkpoint's time.
         t: f64,
     },
@@ -88,6 +87,11 @@ pub enum ResumeRefusal {
 
 /// Runs `platefall resume`.
 pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
+    let cadence = CheckpointArgs {
+        checkpoint_every: args.checkpoint_every,
+        ..CheckpointArgs::default()
+    };
+    cadence.every()?;
     let ckpt = read_checkpoint(&args.file, &version())?;
     let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
         file: args.file.clone(),
@@ -110,11 +114,12 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let t = ckpt.sim.flow.t;
     let (sim, history) = Simulation::restore(config, ckpt.sim)?;
     if sim.finished() {
-        let (flag, value) = match args.turns {
-            Some(n) => ("--turns", n),
-            None => ("--t-end", sim.config().time.t_end),
+        let end = match (args.t_end, args.turns) {
+            (Some(te), _) => format!("--t-end {te}"),
+            (None, Some(n)) => format!("--turns {n}"),
+            (None, None) => "the run's end".into(),
         };
-        anyhow::bail!(ResumeRefusal::AlreadyOver { flag, value, t });
+        anyhow::bail!(ResumeRefusal::AlreadyOver { end, t });
     }
     let path = args.checkpoint.clone().unwrap_or_else(|| args.file.clone());
     let started = Started {

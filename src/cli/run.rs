@@ -104,6 +104,9 @@ pub(super) fn execute(
     }
     interrupts.set_phase(Phase::Finalising);
     let (saved, ckpt_failure) = last_checkpoint(&r.sim, &rec, r.checkpoints.as_mut());
+    let saved = saved
+        .then(|| r.checkpoints.as_ref().map(|c| c.path().to_path_buf()))
+        .flatten();
     let summary = summarize(r.sim.config(), &rec, wall_seconds);
     let text = report(r.sim.config(), &summary);
     // (Cannot fail for a plain struct; never leave the logger unfinished over it.)
@@ -120,7 +123,7 @@ pub(super) fn execute(
     if let Some(c) = r.checkpoints.as_ref().filter(|c| c.written > 0) {
         eprintln!("{}", c.report_line());
     }
-    let code = exit_code(&rec.status, &summary, &failures, saved);
+    let code = exit_code(&rec.status, &summary, &failures, saved.as_deref());
     if let Some(r) = log_report.filter(|_| rec.status != RunStatus::Interrupted) {
         // --serve keeps the server up for late viewers until Ctrl-C.
         interrupts.set_phase(Phase::Serving);
@@ -288,13 +291,13 @@ fn solve(
     })
 }
 
-/// The exit code of a finished run, with its one-line messages on stderr; `checkpointed`: a
-/// stopped run wrote its checkpoint.
+/// The exit code of a finished run, with its one-line messages on stderr; `checkpointed`: the
+/// checkpoint a stopped run wrote.
 fn exit_code(
     status: &RunStatus,
     summary: &Summary,
     failures: &[String],
-    checkpointed: bool,
+    checkpointed: Option<&Path>,
 ) -> Exit {
     if !failures.is_empty() {
         let stopped = match status {
@@ -312,11 +315,10 @@ fn exit_code(
         RunStatus::Interrupted => eprintln!(
             "interrupted: the outputs hold the run up to t = {:.3} and say so{}",
             summary.t_reached,
-            if checkpointed {
-                "; `platefall resume CHECKPOINT` goes on from there"
-            } else {
-                ""
-            }
+            checkpointed.map_or(String::new(), |p| format!(
+                "; `platefall resume {}` goes on from there",
+                p.display()
+            ))
         ),
         RunStatus::OutputFailed(msg) if failures.is_empty() => eprintln!("error: {msg}"),
         RunStatus::Diverged(e) if failures.is_empty() => {
@@ -325,7 +327,9 @@ fn exit_code(
         _ => {}
     }
     match status {
-        RunStatus::Interrupted if checkpointed && failures.is_empty() => Exit::Checkpointed,
+        RunStatus::Interrupted if checkpointed.is_some() && failures.is_empty() => {
+            Exit::Checkpointed
+        }
         RunStatus::Interrupted | RunStatus::OutputFailed(_) => Exit::of_status(status),
         _ if !failures.is_empty() => Exit::OutputFailed,
         _ => Exit::of_status(status),
