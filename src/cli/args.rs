@@ -73,6 +73,10 @@ pub struct SolverArgs {
     pub checkpoint: CheckpointArgs,
 }
 
+/// The checkpoint cadence when only `--checkpoint FILE` is given (convective times); its cost is
+/// in docs/user-guide.md (well under 1 % of the run).
+pub const DEFAULT_CHECKPOINT_EVERY: f64 = 1.0;
+
 /// Checkpoints: `--checkpoint-every`, `--checkpoint` (also `platefall resume`'s).
 #[derive(Args, Debug, Clone, Default)]
 #[command(next_help_heading = "Checkpoints")]
@@ -84,7 +88,7 @@ pub struct CheckpointArgs {
     pub checkpoint_every: Option<f64>,
 
     /// The checkpoint file [default: the CSV's, else the recording's, else the summary's path
-    /// with the extension .ckpt, else <case>.ckpt]; alone it writes checkpoints only at a stop
+    /// with the extension .ckpt, else <case>.ckpt]; alone it checkpoints every 1 c/U
     #[arg(long, value_name = "FILE")]
     pub checkpoint: Option<PathBuf>,
 
@@ -99,8 +103,12 @@ impl CheckpointArgs {
         self.checkpoint_every.is_some() || self.checkpoint.is_some()
     }
 
-    /// The cadence, checked: finite and > 0.
+    /// The cadence, checked: finite and > 0; [`DEFAULT_CHECKPOINT_EVERY`] when only the file
+    /// is given.
     pub fn every(&self) -> Result<Option<f64>, ArgError> {
+        if self.checkpoint_every.is_none() && self.checkpoint.is_some() {
+            return Ok(Some(DEFAULT_CHECKPOINT_EVERY));
+        }
         match self.checkpoint_every {
             Some(t) if !(t.is_finite() && t > 0.0) => Err(ArgError::Invalid {
                 flag: "--checkpoint-every",

@@ -32,6 +32,11 @@ use command::Command;
 use platefall_record::output::OutputError;
 
 pub use command::{parse, Cli};
+
+/// The program and version that checkpoints record, e.g. "platefall 0.1.0".
+pub fn program_version() -> String {
+    run::version()
+}
 #[cfg(test)]
 pub(crate) use sweep_cases::CommandLineCases;
 
