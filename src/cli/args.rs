@@ -75,7 +75,7 @@ pub struct SolverArgs {
 
 /// The checkpoint cadence when only `--checkpoint FILE` is given (convective times); its cost is
 /// in docs/user-guide.md (well under 1 % of the run).
-pub const DEFAULT_CHECKPOINT_EVERY: f64 = 1.0;
+pub const DEFAULT_CHECKPOINT_EVERY: f64 = 10.0;
 
 /// Checkpoints: `--checkpoint-every`, `--checkpoint` (also `platefall resume`'s).
 #[derive(Args, Debug, Clone, Default)]
@@ -88,7 +88,7 @@ pub struct CheckpointArgs {
     pub checkpoint_every: Option<f64>,
 
     /// The checkpoint file [default: the CSV's, else the recording's, else the summary's path
-    /// with the extension .ckpt, else <case>.ckpt]; alone it checkpoints every 1 c/U
+    /// with the extension .ckpt, else <case>.ckpt]; alone it checkpoints every 10 c/U
     #[arg(long, value_name = "FILE")]
     pub checkpoint: Option<PathBuf>,
 

@@ -75,6 +75,9 @@ pub enum ResumeRefusal {
     /// The command line builds another run description than the checkpoint's.
     #[error("checkpoint {}: its command line now builds another run than the checkpoint holds (a file it reads changed, or run it from the directory it was started in)", .0.display())]
     ConfigChanged(PathBuf),
+    /// The earlier CSV does not hold the rows up to the checkpoint.
+    #[error("--csv: cannot resume it: {0}")]
+    Csv(String),
     /// The run would already be over under the end asked for.
     #[error("{end}: the checkpoint is at t = {t:.4}; the run would already be over (give a later --t-end or more --turns)")]
     AlreadyOver {
@@ -179,7 +182,10 @@ fn resumed_outputs(
         .collect();
     let mut opts = r.resolve(kind, &others)?;
     opts.csv_prefix = match (&opts.csv, &info.csv) {
-        (Some(_), Some(earlier)) => Some((earlier.clone(), steps)),
+        (Some(_), Some(earlier)) => {
+            platefall_record::check_csv_prefix(earlier, steps).map_err(ResumeRefusal::Csv)?;
+            Some((earlier.clone(), steps))
+        }
         _ => None,
     };
     opts.recording_id = info.recording_id.clone();

@@ -133,44 +133,23 @@ fn codec() -> impl bincode::Options {
 }
 
 /// Writes `ckpt` to `path` atomically (temporary name, sync, rename); returns its size in bytes.
+/// The payload is encoded in memory first and written in one piece.
 pub fn write_checkpoint(path: &Path, ckpt: &Checkpoint) -> Result<u64, OutputError> {
+    let payload = codec()
+        .serialize(ckpt)
+        .map_err(|e| OutputError::new("--checkpoint", path, format!("cannot encode: {e}")))?;
+    let crc = crc32fast::hash(&payload);
     let mut out = PendingFile::create("--checkpoint", path)?;
-    let fail =
-        |out: &PendingFile, e: &dyn std::fmt::Display| out.fail(format!("write failed: {e}"));
-    out.write_all(MAGIC)
+    let written = out
+        .write_all(MAGIC)
         .and_then(|()| out.write_all(&FORMAT_VERSION.to_le_bytes()))
-        .map_err(|e| fail(&out, &e))?;
-    let mut body = Crc {
-        out: &mut out,
-        crc: crc32fast::Hasher::new(),
-        len: 0,
-    };
-    let encoded = codec().serialize_into(&mut body, ckpt);
-    let (crc, len) = (body.crc.finalize(), body.len);
-    encoded.map_err(|e| fail(&out, &e))?;
-    out.write_all(&len.to_le_bytes())
-        .and_then(|()| out.write_all(&crc.to_le_bytes()))
-        .map_err(|e| fail(&out, &e))?;
+        .and_then(|()| out.write_all(&payload))
+        .and_then(|()| out.write_all(&(payload.len() as u64).to_le_bytes()))
+        .and_then(|()| out.write_all(&crc.to_le_bytes()));
+    if let Err(e) = written {
+        return Err(out.fail(format!("write failed: {e}")));
+    }
     out.commit().map(|(_, n)| n)
-}
-
-/// A writer that checksums and counts what goes through it.
-struct Crc<'a, W: Write> {
-    out: &'a mut W,
-    crc: crc32fast::Hasher,
-    len: u64,
-}
-
-impl<W: Write> Write for Crc<'_, W> {
-    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
-        let n = self.out.write(buf)?;
-        self.crc.update(&buf[..n]);
-        self.len += n as u64;
-        Ok(n)
-    }
-    fn flush(&mut self) -> std::io::Result<()> {
-        self.out.flush()
-    }
 }
 
 /// Reads and checks a checkpoint written by `program` (see the module docs for the order of the

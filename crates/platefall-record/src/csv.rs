@@ -108,6 +108,12 @@ impl CsvWriter {
     }
 }
 
+/// Whether the CSV at `path` can start a resumed run's CSV after `rows` steps: a platefall CSV
+/// whose first `rows` data rows are steps 1 to `rows`; why not, in words.
+pub fn check_prefix(path: &Path, rows: u64) -> Result<(), String> {
+    prefix_rows(path, rows).map(|_| ())
+}
+
 /// The first `rows` data rows of the CSV at `path` (after checking its header and that row k
 /// is step k); why not, in words.
 fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, String> {

@@ -152,7 +152,7 @@ pub mod viewer;
 #[path = "viewer_off.rs"]
 pub mod viewer;
 
-pub use csv::{CSV_HEADER, CSV_TRAILER};
+pub use csv::{check_prefix as check_csv_prefix, CSV_HEADER, CSV_TRAILER};
 pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use messages::ConnectReport;
 pub use options::{
