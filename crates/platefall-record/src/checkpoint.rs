@@ -221,3 +221,56 @@ fn word<const K: usize>(b: &[u8]) -> [u8; K] {
     w.copy_from_slice(b);
     w
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use platefall_core::grid::GridSpec;
+    use platefall_core::sim::{Case, RunConfig, Simulation};
+
+    /// A checkpoint of a static run at N = 8 after a few steps, written by `program`.
+    fn checkpoint(program: &str) -> Checkpoint {
+        let mut config = RunConfig::new(
+            Case::Static {
+                alpha: 0.4,
+                kick: 0.05,
+            },
+            GridSpec::modern(8),
+        );
+        config.time.t_end = 0.05;
+        let mut sim = Simulation::new(config.validate().unwrap()).unwrap();
+        let mut history = platefall_core::sim::History::default();
+        for _ in 0..3 {
+            history.push(sim.step().unwrap());
+        }
+        Checkpoint {
+            program: program.into(),
+            resume: ResumeInfo {
+                argv: vec!["platefall".into(), "static".into()],
+                config_json: "{}".into(),
+                t_end: 0.05,
+                turns: None,
+                csv: None,
+                save: None,
+                summary: None,
+                recording_id: None,
+                every: Some(1.0),
+            },
+            sim: sim.save(&history),
+        }
+    }
+
+    #[test]
+    fn a_checkpoint_reads_back_bit_for_bit_and_names_its_writer() {
+        let dir = std::env::temp_dir().join(format!("pf-ckpt-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("a.ckpt");
+        let ckpt = checkpoint("platefall 0.0.1");
+        write_checkpoint(&path, &ckpt).unwrap();
+        assert_eq!(read_checkpoint(&path, "platefall 0.0.1").unwrap(), ckpt);
+        let e = read_checkpoint(&path, "platefall 0.2.0").unwrap_err();
+        assert!(matches!(e, CheckpointError::Program { .. }), "{e}");
+        assert!(e.to_string().contains("written by platefall 0.0.1"), "{e}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
