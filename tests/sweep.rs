@@ -538,7 +538,7 @@ fn a_case_stopped_by_sigusr1_resumes_from_its_checkpoint() {
     let dir = scratch("usr1");
     let p = plan(
         &dir,
-        "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 4\n[grid]\nalpha = [0.3]\n",
+        "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 4\ncheckpoint-every = 0.5\n[grid]\nalpha = [0.3]\n",
     );
     let out = sweep(&[p.to_str().unwrap(), "--slurm"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
