@@ -15,17 +15,20 @@ pub(crate) enum Exit {
     Diverged,
     /// 4: an output could not be written.
     OutputFailed,
+    /// 75: interrupted (SIGTERM, SIGUSR1, Ctrl-C) after writing a checkpoint.
+    Checkpointed,
     /// 130: interrupted (Ctrl-C, SIGTERM).
     Interrupted,
 }
 
 impl Exit {
     /// Every code, in order.
-    pub(crate) const ALL: [Exit; 5] = [
+    pub(crate) const ALL: [Exit; 6] = [
         Exit::Completed,
         Exit::BadInput,
         Exit::Diverged,
         Exit::OutputFailed,
+        Exit::Checkpointed,
         Exit::Interrupted,
     ];
 
@@ -36,6 +39,7 @@ impl Exit {
             Exit::BadInput => 2,
             Exit::Diverged => 3,
             Exit::OutputFailed => 4,
+            Exit::Checkpointed => 75,
             Exit::Interrupted => 130,
         }
     }
@@ -70,6 +74,11 @@ impl Exit {
                 "an output could not be written (disk full, permissions, directory removed, sink \
                  error): nothing incomplete is left at its final name"
             }
+            Exit::Checkpointed => {
+                "interrupted (SIGTERM, SIGUSR1, Ctrl-C) with checkpoints on (--checkpoint-every, \
+                 --checkpoint): the checkpoint was written first and `platefall resume FILE` goes \
+                 on exactly; the outputs hold the run up to then and say so"
+            }
             Exit::Interrupted => {
                 "interrupted (Ctrl-C, SIGTERM); the outputs hold the run up to then and say so. A \
                  second Ctrl-C quits at once, leaving unfinished outputs as .NAME.partial-PID files"
@@ -87,6 +96,7 @@ impl Exit {
             }
             Exit::Diverged => "the sweep ended but some cases did not complete (listed, with why)",
             Exit::OutputFailed => "an output could not be written",
+            Exit::Checkpointed => "interrupted; the running cases wrote their checkpoints",
             Exit::Interrupted => {
                 "interrupted (the running cases are finalised and the results merged first)"
             }
@@ -122,7 +132,7 @@ mod tests {
     #[test]
     fn each_code_means_one_thing() {
         let codes: Vec<u8> = Exit::ALL.iter().map(|e| e.code()).collect();
-        assert_eq!(codes, [0, 2, 3, 4, 130]);
+        assert_eq!(codes, [0, 2, 3, 4, 75, 130]);
         let help = Exit::help(false);
         assert!(help.contains("\n  130  interrupted"), "{help}");
         assert!(Exit::help(true).contains("\n  3    the sweep ended"));

@@ -537,3 +537,51 @@ fn a_killed_sweep_stops_its_cases_and_resumes() {
     assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
     assert!(rows(&out_dir).iter().all(|r| status_of(r) == "completed"));
 }
+
+#[test]
+fn a_case_stopped_by_sigusr1_resumes_from_its_checkpoint() {
+    let dir = scratch("usr1");
+    let p = plan(
+        &dir,
+        "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 4\ncheckpoint-every = 0.5\n[grid]\nalpha = [0.3]\n",
+    );
+    let out = sweep(&[p.to_str().unwrap(), "--slurm"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let script = std::fs::read_to_string(dir.join("out/sweep.sbatch")).unwrap();
+    for line in ["--signal=B:USR1@120", "--requeue", "--open-mode=append"] {
+        assert!(script.contains(&format!("#SBATCH {line}\n")), "{script}");
+    }
+    let out_dir = dir.join("out");
+    let case = out_dir.join("cases/0000-alpha=0.3");
+    let mut child = platefall()
+        .args(["sweep", "run-case", out_dir.to_str().unwrap(), "0"])
+        .stdout(Stdio::null())
+        .spawn()
+        .unwrap();
+    wait_until(60, "no checkpoint", || case.join("run.ckpt").exists());
+    // SAFETY: signalling our own child process.
+    unsafe { libc::kill(child.id() as libc::pid_t, libc::SIGUSR1) };
+    assert_eq!(child.wait().unwrap().code(), Some(75));
+    let again = sweep(&["run-case", out_dir.to_str().unwrap(), "0"]);
+    assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
+    // The same CSV as the case run uninterrupted with the first attempt's options.
+    let log = std::fs::read_to_string(case.join("log.txt")).unwrap();
+    let first = log.lines().find(|l| l.starts_with("$ ")).unwrap();
+    let args: Vec<&str> = first
+        .split(' ')
+        .skip(2)
+        .take_while(|a| !a.starts_with("--checkpoint="))
+        .collect();
+    let full = dir.join("full.csv");
+    let direct = platefall()
+        .args(&args)
+        .args(["--no-save", "-q", "--csv", full.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(direct.status.code(), Some(0), "{}", text(&direct.stderr));
+    let resumed = std::fs::read(case.join("run.csv")).unwrap();
+    assert!(
+        resumed == std::fs::read(&full).unwrap(),
+        "the resumed case's CSV differs"
+    );
+}

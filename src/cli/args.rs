@@ -69,6 +69,55 @@ pub struct SolverArgs {
     pub threads: usize,
     #[command(flatten)]
     pub limits: super::limits::LimitArgs,
+    #[command(flatten)]
+    pub checkpoint: CheckpointArgs,
+}
+
+/// The checkpoint cadence when only `--checkpoint FILE` is given (convective times); its cost is
+/// in docs/user-guide.md (well under 1 % of the run).
+pub const DEFAULT_CHECKPOINT_EVERY: f64 = 10.0;
+
+/// Checkpoints: `--checkpoint-every`, `--checkpoint` (also `platefall resume`'s).
+#[derive(Args, Debug, Clone, Default)]
+#[command(next_help_heading = "Checkpoints")]
+pub struct CheckpointArgs {
+    /// Write a checkpoint every T convective times, and at the end, that `platefall resume`
+    /// continues exactly; SIGTERM, SIGUSR1 and the first Ctrl-C then also write one before the
+    /// outputs are finalised (exit code 75)
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub checkpoint_every: Option<f64>,
+
+    /// The checkpoint file [default: the CSV's, else the recording's, else the summary's path
+    /// with the extension .ckpt, else <case>.ckpt]; alone it checkpoints every 10 c/U
+    #[arg(long, value_name = "FILE")]
+    pub checkpoint: Option<PathBuf>,
+
+    /// Test hook: stop (as SIGTERM does) after this many steps in all
+    #[arg(long, value_name = "N", hide = true)]
+    pub stop_after_steps: Option<u64>,
+}
+
+impl CheckpointArgs {
+    /// Whether checkpoints are asked for at all.
+    pub fn enabled(&self) -> bool {
+        self.checkpoint_every.is_some() || self.checkpoint.is_some()
+    }
+
+    /// The cadence, checked: finite and > 0; [`DEFAULT_CHECKPOINT_EVERY`] when only the file
+    /// is given.
+    pub fn every(&self) -> Result<Option<f64>, ArgError> {
+        if self.checkpoint_every.is_none() && self.checkpoint.is_some() {
+            return Ok(Some(DEFAULT_CHECKPOINT_EVERY));
+        }
+        match self.checkpoint_every {
+            Some(t) if !(t.is_finite() && t > 0.0) => Err(ArgError::Invalid {
+                flag: "--checkpoint-every",
+                value: t.to_string(),
+                accepted: "a finite number > 0 (convective times)".into(),
+            }),
+            other => Ok(other),
+        }
+    }
 }
 
 /// `--far-field`.

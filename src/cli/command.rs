@@ -8,6 +8,7 @@ use super::args::{ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs};
 use super::bench_args::BenchArgs;
 use super::converge_args::ConvergeArgs;
 use super::record_args::RecordArgs;
+use super::resume::ResumeArgs;
 use super::sweep_args::SweepArgs;
 use crate::exit::Exit;
 
@@ -55,6 +56,10 @@ pub enum Command {
     /// observed order, the Richardson extrapolation and the grid-convergence index per quantity,
     /// with the runs' 95 % intervals deciding which differences are resolved.
     Converge(ConvergeArgs),
+    /// Continue a run from its checkpoint (--checkpoint-every, or a stop by SIGTERM, SIGUSR1 or
+    /// Ctrl-C), exactly as if it had not stopped; or extend a completed one (--t-end, --turns).
+    #[command(after_help = Exit::help(false))]
+    Resume(ResumeArgs),
 }
 
 impl Command {
@@ -66,7 +71,9 @@ impl Command {
             Command::Forced(a) => Some((&a.solver, &a.record)),
             Command::Pinned(a) => Some((&a.solver, &a.record)),
             Command::Free(a) => Some((&a.solver, &a.record)),
-            Command::Bench(_) | Command::Sweep(_) | Command::Converge(_) => None,
+            Command::Bench(_) | Command::Sweep(_) | Command::Converge(_) | Command::Resume(_) => {
+                None
+            }
         }
     }
 }

@@ -66,6 +66,13 @@ pub enum ArgError {
         flag: &'static str,
         when: &'static str,
     },
+    /// A value out of its accepted range.
+    #[error("{flag} {value} is out of range: accepted {accepted}")]
+    Invalid {
+        flag: &'static str,
+        value: String,
+        accepted: String,
+    },
     /// A file named by a flag that cannot be read or holds bad data.
     #[error("{flag} {path}: {why}")]
     File {

@@ -10,6 +10,7 @@
 //! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
 mod args;
 mod bench_args;
+mod checkpointer;
 mod command;
 mod config;
 mod converge_args;
@@ -17,6 +18,7 @@ mod flags;
 mod limits;
 mod plate_args;
 mod record_args;
+mod resume;
 mod run;
 mod shape_args;
 mod signals;
@@ -38,6 +40,12 @@ pub fn case_config(args: &[String]) -> Result<platefall_core::sim::ValidatedConf
     use crate::sweep::CaseCommands as _;
     sweep_cases::CommandLineCases.config(args).map_err(|e| e.0)
 }
+
+/// The program and version that checkpoints record, e.g. "platefall 0.1.0".
+pub fn program_version() -> String {
+    run::version()
+}
+
 #[cfg(test)]
 pub(crate) use sweep_cases::CommandLineCases;
 
@@ -51,6 +59,7 @@ pub fn main() -> ExitCode {
         Command::Bench(args) => bench_args::run_bench(args).map(|()| Exit::Completed),
         Command::Sweep(args) => return sweep_args::run(args).into(),
         Command::Converge(args) => return converge_args::run(args).into(),
+        Command::Resume(args) => resume::run_resume(args),
         cmd => run::run_case(cmd),
     };
     match result {

@@ -6,16 +6,21 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
+use super::args::CheckpointArgs;
+use super::checkpointer::Checkpointer;
 use super::command::Command;
 use super::config::{plate_notes, run_config};
 use super::limits::check_limits;
+use super::record_args::RecordArgs;
 use super::signals::{Interrupts, Phase};
 use crate::exit::Exit;
 use platefall_core::sim::{
-    FieldSnapshot, Observer, RunRecord, RunStatus, Simulation, StepSample, ValidatedConfig,
+    CaseKind, FieldSnapshot, History, Observer, RunRecord, RunStatus, Simulation, StepSample,
+    ValidatedConfig,
 };
 use platefall_post::report::report;
 use platefall_post::summary::{summarize, Summary};
+use platefall_record::checkpoint::ResumeInfo;
 use platefall_record::messages::{RunInfo, RunOutcome};
 use platefall_record::output::write_atomically;
 use platefall_record::{Logger, LoggerReport, RecordOptions};
@@ -26,43 +31,156 @@ struct Prepared {
     opts: RecordOptions,
     summary_path: Option<PathBuf>,
     threads: usize,
+    checkpoint: Option<PathBuf>,
+}
+
+/// A run ready to go: the simulation (new, or restored from a checkpoint) and its outputs.
+pub(super) struct Started {
+    /// The run.
+    pub sim: Simulation,
+    /// The steps' history so far (empty for a new run).
+    pub history: History,
+    /// The recording and CSV.
+    pub opts: RecordOptions,
+    /// `--summary`.
+    pub summary_path: Option<PathBuf>,
+    /// `--threads`.
+    pub threads: usize,
+    /// The run's checkpoints, if asked for.
+    pub checkpoints: Option<Checkpointer>,
+    /// The test hook `--stop-after-steps`.
+    pub stop_after: Option<u64>,
 }
 
 /// Runs a case subcommand to its end; the exit code says how it ended. An `Err` means nothing
 /// was run (bad input; or, for an [`OutputError`](platefall_record::output::OutputError), an
 /// output that could not even be created).
 pub fn run_case(cmd: &Command) -> anyhow::Result<Exit> {
-    let p = prepare(cmd)?;
+    let mut p = prepare(cmd)?;
+    let Some((solver, _)) = cmd.case_args() else {
+        anyhow::bail!("not a case subcommand");
+    };
     let interrupts = Interrupts::install()?;
+    let checkpoints = match p.checkpoint.take() {
+        Some(path) => {
+            let id = new_recording_id();
+            p.opts.recording_id = Some(id.clone());
+            let info = resume_info(&p, solver.checkpoint.every()?, id)?;
+            Some(Checkpointer::new(path, info.every, 0.0, info, version()))
+        }
+        None => None,
+    };
     let info = RunInfo::new(&p.config, command_line(), version());
-    let mut sim = Simulation::new(p.config)?;
-    let mut logger = platefall_record::spawn_logger(p.opts.clone(), info)?;
-    let pool = crate::pool::pool(p.threads)?;
+    let started = Started {
+        sim: Simulation::new(p.config)?,
+        history: History::default(),
+        opts: p.opts,
+        summary_path: p.summary_path,
+        threads: p.threads,
+        checkpoints,
+        stop_after: solver.checkpoint.stop_after_steps,
+    };
+    execute(started, info, &interrupts)
+}
 
-    let (mut rec, wall_seconds, lost) = solve(&mut sim, &mut logger, interrupts.stop(), &pool);
+/// Runs a started run to its end: the solver, the logger, the checkpoints at a stop or the
+/// end, the summary, the report; the exit code says how it ended.
+pub(super) fn execute(
+    mut r: Started,
+    info: RunInfo,
+    interrupts: &Interrupts,
+) -> anyhow::Result<Exit> {
+    let mut logger = platefall_record::spawn_logger(r.opts.clone(), info)?;
+    logger.resume_fields_at(r.sim.flow().t(), r.history.total_steps());
+    let pool = crate::pool::pool(r.threads)?;
+    let ctx = Solve {
+        stop: interrupts.stop(),
+        checkpoints: r.checkpoints.as_mut(),
+        stop_after: r.stop_after,
+    };
+    let (mut rec, wall_seconds, lost) = solve(&mut r.sim, r.history, &mut logger, ctx, &pool);
     if let Some(why) = lost {
         rec.status = RunStatus::OutputFailed(why);
     }
     interrupts.set_phase(Phase::Finalising);
-    let summary = summarize(sim.config(), &rec, wall_seconds);
-    let text = report(sim.config(), &summary);
+    let (saved, ckpt_failure) = last_checkpoint(&r.sim, &rec, r.checkpoints.as_mut());
+    let saved = saved
+        .then(|| r.checkpoints.as_ref().map(|c| c.path().to_path_buf()))
+        .flatten();
+    let summary = summarize(r.sim.config(), &rec, wall_seconds);
+    let text = report(r.sim.config(), &summary);
     // (Cannot fail for a plain struct; never leave the logger unfinished over it.)
     let summary_json = serde_json::to_string_pretty(&summary)
         .unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"));
     let (log_report, mut failures) = finish_logger(logger, &rec.status, &summary_json, &text);
-    if let Some(path) = &p.summary_path {
+    failures.extend(ckpt_failure);
+    if let Some(path) = &r.summary_path {
         if let Err(e) = write_atomically("--summary", path, summary_json.as_bytes()) {
             failures.push(e.to_string());
         }
     }
     print_report(&text, log_report.as_ref());
-    let code = exit_code(&rec.status, &summary, &failures);
+    if let Some(c) = r.checkpoints.as_ref().filter(|c| c.written > 0) {
+        eprintln!("{}", c.report_line());
+    }
+    let code = exit_code(&rec.status, &summary, &failures, saved.as_deref());
     if let Some(r) = log_report.filter(|_| rec.status != RunStatus::Interrupted) {
         // --serve keeps the server up for late viewers until Ctrl-C.
         interrupts.set_phase(Phase::Serving);
         r.serve_until_interrupted(interrupts.stop())?;
     }
     Ok(code)
+}
+
+/// The checkpoint at a stop (or, with a cadence, at the end): whether one was written at a
+/// stop, and the failure to write it.
+fn last_checkpoint(
+    sim: &Simulation,
+    rec: &RunRecord,
+    checkpoints: Option<&mut Checkpointer>,
+) -> (bool, Option<String>) {
+    let Some(c) = checkpoints else {
+        return (false, None);
+    };
+    let wanted = match rec.status {
+        RunStatus::Interrupted => true,
+        RunStatus::Completed => c.periodic(),
+        _ => false,
+    };
+    if !wanted {
+        return (false, None);
+    }
+    match c.write(sim, &rec.samples) {
+        Ok(()) => (rec.status == RunStatus::Interrupted, None),
+        Err(e) => (false, Some(e.to_string())),
+    }
+}
+
+/// What the checkpoint of a new run records to resume it.
+fn resume_info(p: &Prepared, every: Option<f64>, id: String) -> anyhow::Result<ResumeInfo> {
+    let abs = |o: &Option<PathBuf>| -> std::io::Result<Option<PathBuf>> {
+        o.as_deref().map(std::path::absolute).transpose()
+    };
+    Ok(ResumeInfo {
+        argv: std::env::args().collect(),
+        config_json: serde_json::to_string_pretty(&p.config)?,
+        t_end: p.config.time.t_end,
+        turns: p.config.time.turns,
+        csv: abs(&p.opts.csv)?,
+        save: abs(&p.opts.save)?,
+        summary: abs(&p.summary_path)?,
+        recording_id: Some(id),
+        every,
+    })
+}
+
+/// A recording id of its own for a run that may be continued (the continuation takes it).
+fn new_recording_id() -> String {
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map(|d| d.as_nanos())
+        .unwrap_or(0);
+    format!("platefall-{}-{nanos}", std::process::id())
 }
 
 /// Validates everything before anything runs or is written: values, resource limits, paths.
@@ -78,9 +196,20 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
         eprintln!("warning: {warning}");
     }
     let summary_path = solver_args.summary.clone();
+    solver_args.checkpoint.every()?;
+    let checkpoint = solver_args.checkpoint.enabled().then(|| {
+        let summary = summary_path.as_deref();
+        checkpoint_path(
+            &solver_args.checkpoint,
+            record_args,
+            summary,
+            config.case.kind(),
+        )
+    });
     let others: Vec<(&'static str, &Path)> = summary_path
         .iter()
         .map(|p| ("--summary", p.as_path()))
+        .chain(checkpoint.iter().map(|p| ("--checkpoint", p.as_path())))
         .collect();
     let opts = record_args.resolve(config.case.kind(), &others)?;
     for line in plate_notes(cmd, &config) {
@@ -91,6 +220,7 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
         opts,
         summary_path,
         threads: solver_args.threads,
+        checkpoint,
     })
 }
 
@@ -127,32 +257,48 @@ fn print_report(text: &str, log_report: Option<&LoggerReport>) {
 }
 
 /// The program and its version, for the recording.
-fn version() -> String {
+pub(super) fn version() -> String {
     format!("platefall {}", env!("CARGO_PKG_VERSION"))
 }
 
-/// Runs the solver inside the worker pool (this thread waits), timing it. The third value is the
-/// output failure that stopped the run, if one did.
+/// What the solver loop polls besides the logger: the stop flag, the checkpoints, the test hook.
+struct Solve<'a> {
+    stop: &'a AtomicBool,
+    checkpoints: Option<&'a mut Checkpointer>,
+    stop_after: Option<u64>,
+}
+
+/// Runs the solver inside the worker pool (this thread waits), timing it, going on with the
+/// steps' `history`. The third value is the output failure that stopped the run, if one did.
 fn solve(
     sim: &mut Simulation,
+    history: History,
     logger: &mut Logger,
-    stop: &AtomicBool,
+    ctx: Solve,
     pool: &rayon::ThreadPool,
 ) -> (RunRecord, f64, Option<String>) {
     pool.install(|| {
         let mut fwd = Forward {
             logger,
-            stop,
+            stop: ctx.stop,
             lost: None,
+            checkpoints: ctx.checkpoints,
+            stop_after: ctx.stop_after,
         };
         let start = Instant::now();
-        let rec = sim.run(&mut fwd);
+        let rec = sim.run_from(&mut fwd, history);
         (rec, start.elapsed().as_secs_f64(), fwd.lost)
     })
 }
 
-/// The exit code of a finished run, with its one-line messages on stderr.
-fn exit_code(status: &RunStatus, summary: &Summary, failures: &[String]) -> Exit {
+/// The exit code of a finished run, with its one-line messages on stderr; `checkpointed`: the
+/// checkpoint a stopped run wrote.
+fn exit_code(
+    status: &RunStatus,
+    summary: &Summary,
+    failures: &[String],
+    checkpointed: Option<&Path>,
+) -> Exit {
     if !failures.is_empty() {
         let stopped = match status {
             RunStatus::OutputFailed(_) => {
@@ -167,8 +313,12 @@ fn exit_code(status: &RunStatus, summary: &Summary, failures: &[String]) -> Exit
     }
     match status {
         RunStatus::Interrupted => eprintln!(
-            "interrupted: the outputs hold the run up to t = {:.3} and say so",
-            summary.t_reached
+            "interrupted: the outputs hold the run up to t = {:.3} and say so{}",
+            summary.t_reached,
+            checkpointed.map_or(String::new(), |p| format!(
+                "; `platefall resume {}` goes on from there",
+                p.display()
+            ))
         ),
         RunStatus::OutputFailed(msg) if failures.is_empty() => eprintln!("error: {msg}"),
         RunStatus::Diverged(e) if failures.is_empty() => {
@@ -177,26 +327,37 @@ fn exit_code(status: &RunStatus, summary: &Summary, failures: &[String]) -> Exit
         _ => {}
     }
     match status {
+        RunStatus::Interrupted if checkpointed.is_some() && failures.is_empty() => {
+            Exit::Checkpointed
+        }
         RunStatus::Interrupted | RunStatus::OutputFailed(_) => Exit::of_status(status),
         _ if !failures.is_empty() => Exit::OutputFailed,
         _ => Exit::of_status(status),
     }
 }
 
-/// Forwards the solver's output to the logger thread.
+/// Forwards the solver's output to the logger thread, and writes the checkpoints.
 struct Forward<'a> {
     logger: &'a mut Logger,
     stop: &'a AtomicBool,
     lost: Option<String>,
+    checkpoints: Option<&'a mut Checkpointer>,
+    stop_after: Option<u64>,
+}
+
+impl Forward<'_> {
+    /// An output failed: stop the run rather than compute what cannot be kept.
+    fn lose(&mut self, why: String) {
+        self.lost.get_or_insert(why);
+        self.stop.store(true, Ordering::SeqCst);
+    }
 }
 
 impl Observer for Forward<'_> {
     fn step(&mut self, sample: &StepSample) {
         if let Err(e) = self.logger.step(*sample) {
-            // An output failed, or the logger thread is gone: stop the run rather than compute
-            // what cannot be kept.
-            self.lost.get_or_insert(format!("{e:#}"));
-            self.stop.store(true, Ordering::SeqCst);
+            // An output failed, or the logger thread is gone.
+            self.lose(format!("{e:#}"));
         }
     }
     fn wants_field(&mut self, t: f64) -> bool {
@@ -208,10 +369,46 @@ impl Observer for Forward<'_> {
     fn should_stop(&self) -> bool {
         self.stop.load(Ordering::SeqCst)
     }
+    fn after_step(&mut self, sim: &Simulation, history: &History) {
+        if let Some(c) = self.checkpoints.as_deref_mut() {
+            if let Err(e) = c.after_step(sim, history) {
+                self.lose(e.to_string());
+            }
+        }
+        if self.stop_after.is_some_and(|n| sim.flow().steps() >= n) {
+            self.stop.store(true, Ordering::SeqCst);
+        }
+    }
+}
+
+/// The checkpoint file: `--checkpoint`, else beside the CSV, the recording or the summary, else
+/// `<case>.ckpt`.
+fn checkpoint_path(
+    args: &CheckpointArgs,
+    record: &RecordArgs,
+    summary: Option<&Path>,
+    case: CaseKind,
+) -> PathBuf {
+    if let Some(p) = &args.checkpoint {
+        return p.clone();
+    }
+    let save = (!record.no_save).then(|| {
+        record
+            .save
+            .clone()
+            .unwrap_or_else(|| RecordArgs::default_save_path(case))
+    });
+    record
+        .csv
+        .clone()
+        .or(save)
+        .or(summary.map(Path::to_path_buf))
+        .map(|p| p.with_extension("ckpt"))
+        .unwrap_or_else(|| PathBuf::from(format!("{case}.ckpt")))
 }
 
 /// The command line as typed, quoted where needed.
-fn command_line() -> String {
+pub(super) fn command_line() -> String {
     std::env::args()
         .map(|a| {
             if a.chars()

@@ -1,5 +1,9 @@
-//! Ctrl-C (SIGINT; also SIGTERM and SIGHUP through the `ctrlc` crate's termination feature).
+//! Ctrl-C (SIGINT; also SIGTERM and SIGHUP through the `ctrlc` crate's termination feature),
+//! and SIGUSR1 (through `signal-hook`: Slurm's `--signal` warning before a time limit).
 //!
+//! - SIGUSR1 stops the run like the first Ctrl-C, without counting as one. With checkpoints on
+//!   (`--checkpoint-every`, `--checkpoint`) every stop writes a checkpoint before the outputs
+//!   are finalised (exit code 75).
 //! - The first one asks the run to stop after the current step; every output is then finalised
 //!   with what it has and says it was interrupted (exit code 130). After a completed run that
 //!   keeps serving (--serve), it just stops the server (the exit code stays the run's).
@@ -42,6 +46,8 @@ impl Interrupts {
         state.phase.store(Phase::Running as u8, Ordering::SeqCst);
         let s = state.clone();
         ctrlc::set_handler(move || on_interrupt(&s)).context("installing the Ctrl-C handler")?;
+        signal_hook::flag::register(signal_hook::consts::SIGUSR1, state.stop.clone())
+            .context("installing the SIGUSR1 handler")?;
         Ok(Interrupts(state))
     }
 

@@ -13,6 +13,7 @@ use super::failure::Failure;
 use super::layout::Layout;
 use super::plan::{CaseSpec, Outputs};
 use platefall_core::sim::StatusKind;
+use platefall_record::checkpoint::read_checkpoint;
 use platefall_record::output::{write_atomically, OutputError};
 
 /// This executable, for the cases' child processes and the Slurm script.
@@ -76,19 +77,30 @@ pub(crate) fn is_done(layout: &Layout, id: &str) -> bool {
     )
 }
 
-/// The full argument vector of a case: its options plus the outputs the sweep manages.
+/// The full argument vector of a case: its options plus the outputs the sweep manages, with
+/// checkpoints at the default cadence; or, when the case left a checkpoint this program can
+/// read (a stopped attempt), `resume` of it with the same outputs (the recording goes on in a
+/// continuation `run-from-STEP.rrd`; a VTK series is written by the first attempt only).
 pub(crate) fn full_args(layout: &Layout, case: &CaseSpec, outputs: Outputs) -> Vec<String> {
     let path = |p: std::path::PathBuf| p.to_string_lossy().into_owned();
-    let mut args = case.args.clone();
+    let ckpt = layout.checkpoint(&case.id);
+    let resumable = read_checkpoint(&ckpt, &crate::cli::program_version()).is_ok();
+    let mut args = if resumable {
+        vec!["resume".into(), path(ckpt), "--quiet".into()]
+    } else {
+        let mut a = case.args.clone();
+        a.push(format!("--checkpoint={}", path(ckpt)));
+        a.push("--progress=off".into());
+        a
+    };
     args.push(format!("--summary={}", path(layout.summary(&case.id))));
     args.push(format!("--csv={}", path(layout.csv(&case.id))));
-    args.push("--progress=off".into());
-    if outputs.recording {
-        args.push(format!("--save={}", path(layout.recording(&case.id))));
-    } else {
-        args.push("--no-save".into());
+    match (outputs.recording, resumable) {
+        (true, false) => args.push(format!("--save={}", path(layout.recording(&case.id)))),
+        (true, true) => {}
+        (false, _) => args.push("--no-save".into()),
     }
-    if outputs.vtk {
+    if outputs.vtk && !resumable {
         args.push(format!("--vtk={}", path(layout.vtk(&case.id))));
     }
     args

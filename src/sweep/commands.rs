@@ -255,10 +255,36 @@ fn run_case(dir: &Path, index: usize, commands: &dyn CaseCommands) -> Result<Exi
     let status = finish(&layout, running, exit);
     let state = outcome(&layout, &case.id, Some(&status));
     println!("{}: {state} {}", case.id, status.message);
-    Ok(status
+    let code = status
         .exit_code
         .and_then(Exit::from_code)
-        .unwrap_or(case_exit(state)))
+        .unwrap_or(case_exit(state));
+    if code == Exit::Checkpointed {
+        requeue_slurm_task();
+    }
+    Ok(code)
+}
+
+/// Inside a Slurm array task stopped with its checkpoint (the script's `--signal=B:USR1@120`
+/// before the time limit): puts the task back in the queue, where it resumes (best effort).
+fn requeue_slurm_task() {
+    let (Ok(job), Ok(task)) = (
+        std::env::var("SLURM_ARRAY_JOB_ID"),
+        std::env::var("SLURM_ARRAY_TASK_ID"),
+    ) else {
+        return;
+    };
+    let id = format!("{job}_{task}");
+    match std::process::Command::new("scontrol")
+        .args(["requeue", &id])
+        .status()
+    {
+        Ok(s) if s.success() => {
+            println!("requeued Slurm task {id}: it resumes from its checkpoint")
+        }
+        Ok(s) => eprintln!("warning: scontrol requeue {id} failed ({s})"),
+        Err(e) => eprintln!("warning: cannot run scontrol requeue {id}: {e}"),
+    }
 }
 
 /// The exit of `run-case` for a case whose process gave no exit code of platefall's (killed by

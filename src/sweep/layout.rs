@@ -34,6 +34,10 @@ impl Layout {
     pub(crate) fn csv(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("run.csv")
     }
+    /// The case's checkpoint (a stopped case resumes from it on the next sweep).
+    pub(crate) fn checkpoint(&self, id: &str) -> PathBuf {
+        self.case_dir(id).join("run.ckpt")
+    }
     pub(crate) fn recording(&self, id: &str) -> PathBuf {
         self.case_dir(id).join("run.rrd")
     }

@@ -34,9 +34,11 @@ pub(crate) fn outcome(layout: &Layout, id: &str, status: Option<&CaseStatus>) ->
     match (summary, status) {
         (Some(StatusKind::Completed), _) => CaseState::Completed,
         (Some(StatusKind::Diverged), _) => CaseState::Diverged,
-        // Exit 130 after Ctrl-C, or killed by SIGINT before its handler was installed.
+        // Exit 130 after Ctrl-C (75 with its checkpoint), or killed by SIGINT before its handler
+        // was installed.
         (_, Some(s))
-            if s.state == "exited" && (s.exit_code == Some(130) || s.signal == Some(2)) =>
+            if s.state == "exited"
+                && (matches!(s.exit_code, Some(130 | 75)) || s.signal == Some(2)) =>
         {
             CaseState::Interrupted
         }

@@ -17,7 +17,8 @@ use platefall_post::phase::CaseState;
 /// How often running cases are polled.
 const POLL: Duration = Duration::from_millis(50);
 
-/// Installs the Ctrl-C (and SIGTERM) handler: the count of presses.
+/// Installs the Ctrl-C (and SIGTERM, and SIGUSR1: Slurm's warning before a time limit)
+/// handler: the count of presses.
 pub(crate) fn interrupt_counter() -> Result<Arc<AtomicUsize>, Failure> {
     let presses = Arc::new(AtomicUsize::new(0));
     let p = presses.clone();
@@ -25,6 +26,14 @@ pub(crate) fn interrupt_counter() -> Result<Arc<AtomicUsize>, Failure> {
         p.fetch_add(1, Ordering::SeqCst);
     })
     .map_err(|e| Failure::output(format!("cannot install the Ctrl-C handler: {e}")))?;
+    let p = presses.clone();
+    // SAFETY: the handler only increments an atomic, which is async-signal-safe.
+    unsafe {
+        signal_hook::low_level::register(signal_hook::consts::SIGUSR1, move || {
+            p.fetch_add(1, Ordering::SeqCst);
+        })
+    }
+    .map_err(|e| Failure::output(format!("cannot install the SIGUSR1 handler: {e}")))?;
     Ok(presses)
 }
 

@@ -133,6 +133,11 @@ pub(crate) fn script(
     ));
     opt(format!("--cpus-per-task={}", res.cpus.unwrap_or(1)));
     opt("--ntasks=1".into());
+    // Before the time limit the case writes its checkpoint and the task requeues itself; the
+    // next attempt resumes it and appends to the same log.
+    opt("--signal=B:USR1@120".into());
+    opt("--requeue".into());
+    opt("--open-mode=append".into());
     if let Some(p) = &res.partition {
         opt(format!("--partition={p}"));
     }

@@ -223,6 +223,8 @@ pub struct Decoded {
     /// True if the file ends with a footer (RRD manifest): the sink was finalised.
     pub has_footer: bool,
     pub timelines: Vec<String>,
+    /// The recording ids of the recording's chunks (one for one run).
+    pub recording_ids: Vec<String>,
 }
 
 impl Decoded {
@@ -388,6 +390,10 @@ fn decode_impl(path: &Path, partial: bool) -> Decoded {
                     d.blueprint
                         .push(Chunk::from_arrow_msg(&arrow).expect("blueprint chunk"));
                     continue;
+                }
+                let id = store_id.recording_id().to_string();
+                if !d.recording_ids.contains(&id) {
+                    d.recording_ids.push(id);
                 }
                 let chunk = Chunk::from_arrow_msg(&arrow).expect("chunk");
                 let path = chunk.entity_path().to_string();

@@ -41,6 +41,26 @@ impl CsvWriter {
         })
     }
 
+    /// Creates the temporary file and copies into it the header and the first `rows` data rows
+    /// of the CSV at `earlier` (a run being resumed from a checkpoint after `rows` steps), so the
+    /// rows that follow make the same file as an uninterrupted run. Refused when `earlier` is not
+    /// such a CSV or holds fewer rows.
+    pub fn resume(path: &Path, earlier: &Path, rows: u64) -> Result<Self, OutputError> {
+        let lines = prefix_rows(earlier, rows)
+            .map_err(|why| OutputError::new("--csv", path, format!("cannot resume it: {why}")))?;
+        let mut w = Self::create(path)?;
+        for line in &lines {
+            writeln!(w.out, "{line}").map_err(|e| w.out.fail(format!("write failed: {e}")))?;
+        }
+        w.rows = rows;
+        w.last_t = lines
+            .last()
+            .and_then(|l| l.split(',').next())
+            .and_then(|t| t.parse().ok())
+            .unwrap_or(0.0);
+        Ok(w)
+    }
+
     /// Appends one step. Numbers use Rust's shortest round-trip formatting (exact).
     pub fn write(&mut self, s: &StepSample) -> Result<(), OutputError> {
         writeln!(
@@ -86,6 +106,43 @@ impl CsvWriter {
         let (path, _) = self.out.commit()?;
         Ok((path, self.rows))
     }
+}
+
+/// Whether the CSV at `path` can start a resumed run's CSV after `rows` steps: a platefall CSV
+/// whose first `rows` data rows are steps 1 to `rows`; why not, in words.
+pub fn check_prefix(path: &Path, rows: u64) -> Result<(), String> {
+    prefix_rows(path, rows).map(|_| ())
+}
+
+/// The first `rows` data rows of the CSV at `path` (after checking its header and that row k
+/// is step k); why not, in words.
+fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, String> {
+    use std::io::BufRead as _;
+    let file = std::fs::File::open(path)
+        .map_err(|e| format!("cannot read the earlier CSV {}: {e}", path.display()))?;
+    let mut lines = std::io::BufReader::new(file).lines();
+    let header = lines.next().and_then(Result::ok);
+    if header.as_deref() != Some(CSV_HEADER) {
+        return Err(format!("{} is not a platefall CSV", path.display()));
+    }
+    let mut out = Vec::with_capacity(rows as usize);
+    for k in 1..=rows {
+        let line = match lines.next() {
+            Some(Ok(l)) if !l.starts_with('#') => l,
+            _ => {
+                return Err(format!(
+                    "the earlier CSV {} holds {} rows, the checkpoint {rows}",
+                    path.display(),
+                    k - 1
+                ))
+            }
+        };
+        if line.split(',').nth(1) != Some(k.to_string().as_str()) {
+            return Err(format!("row {k} of {} is not step {k}", path.display()));
+        }
+        out.push(line);
+    }
+    Ok(out)
 }
 
 /// The trailer line for a run that ended with `status` after `rows` rows, the last at time `t`.

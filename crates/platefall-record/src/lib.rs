@@ -141,6 +141,7 @@
 //!   free fall (57 snapshots; the 62.6k steps are 16 MB of it). Longer runs: also shorten
 //!   `--t-end` / `--turns`, since the per-step series dominate.
 pub mod cadence;
+pub mod checkpoint;
 mod csv;
 pub mod files;
 mod inject;
@@ -158,7 +159,7 @@ pub mod viewer;
 pub mod vtk;
 
 pub use cadence::Cadence;
-pub use csv::{CSV_HEADER, CSV_TRAILER};
+pub use csv::{check_prefix as check_csv_prefix, CSV_HEADER, CSV_TRAILER};
 pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use messages::ConnectReport;
 pub use options::{

@@ -180,9 +180,10 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
             opts.field_every
         );
     }
-    let csv = match &opts.csv {
-        Some(path) => Some(CsvWriter::create(path)?),
-        None => None,
+    let csv = match (&opts.csv, &opts.csv_prefix) {
+        (Some(path), Some((earlier, rows))) => Some(CsvWriter::resume(path, earlier, *rows)?),
+        (Some(path), None) => Some(CsvWriter::create(path)?),
+        (None, _) => None,
     };
     let csv_link = csv.as_ref().map(CsvWriter::link_check);
     if let Some(v) = opts
@@ -254,6 +255,16 @@ impl Logger {
         let vtk = self.vtk.as_mut().is_some_and(|c| c.due(t));
         self.due = FieldUse { viewer, vtk };
         viewer || vtk
+    }
+
+    /// A run resumed at time `t` after `steps` steps: the field cadence goes on from `t` as
+    /// the saved run's would have (a new run, `steps` = 0, starts with a snapshot).
+    pub fn resume_fields_at(&mut self, t: f64, steps: u64) {
+        if steps > 0 {
+            let fe = self.field_every;
+            let eps = 1e-9 * fe.max(1.0);
+            self.next_field_t = ((t + eps) / fe).floor() * fe + fe;
+        }
     }
 
     /// Sends one step (blocking when the channel is full: time series are never dropped).

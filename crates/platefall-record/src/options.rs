@@ -87,6 +87,12 @@ pub struct RecordOptions {
     pub strobe_every: f64,
     /// The wake pictures.
     pub view: ViewOptions,
+    /// A resumed run's CSV starts with the first rows of this earlier CSV (its path and the
+    /// checkpoint's step count).
+    pub csv_prefix: Option<(PathBuf, u64)>,
+    /// The Rerun recording id (None: a new random one); a continuation recording takes its
+    /// run's.
+    pub recording_id: Option<String>,
 }
 
 impl Default for RecordOptions {
@@ -107,6 +113,8 @@ impl Default for RecordOptions {
             max_fields_in_flight: 4,
             strobe_every: 0.5,
             view: ViewOptions::default(),
+            csv_prefix: None,
+            recording_id: None,
         }
     }
 }

@@ -58,6 +58,9 @@ pub enum AbError {
     /// Primer times not finite and strictly increasing.
     #[error("history primer times must be finite and strictly increasing (oldest first)")]
     PrimeTimes,
+    /// A saved history does not fit this integrator (another number of components).
+    #[error("the saved Adams–Bashforth history does not fit this integrator")]
+    HistoryShape,
 }
 
 /// Variable-step Adams–Bashforth coefficients β_j (SPEC §6, exact variable-step generalisation of
@@ -93,6 +96,20 @@ pub fn ab_weights(times: &[f64], h: f64) -> [f64; MAX_ORDER] {
         }
     }
     beta
+}
+
+/// The stored derivatives of an [`AdamsBashforth`] integrator, as plain data for a checkpoint:
+/// the ring buffer exactly as it is, so a restored integrator takes the same steps.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct AbHistory {
+    /// The ring's times.
+    pub times: [f64; MAX_ORDER],
+    /// The ring's derivatives (`MAX_ORDER` entries of N components).
+    pub derivs: Vec<Vec<f64>>,
+    /// Ring index of the newest entry.
+    pub newest: usize,
+    /// Entries stored.
+    pub len: usize,
 }
 
 /// Adams–Bashforth integrator of order k ∈ 1..=6 for an N-component state (SPEC §6), with a
@@ -223,6 +240,35 @@ impl<const N: usize> AdamsBashforth<N> {
             }
             *yi += h * sum;
         }
+    }
+
+    /// The stored history, for a checkpoint ([`AbHistory`]).
+    pub fn save_history(&self) -> AbHistory {
+        AbHistory {
+            times: self.times,
+            derivs: self.derivs.iter().map(|d| d.to_vec()).collect(),
+            newest: self.newest,
+            len: self.len,
+        }
+    }
+
+    /// Puts back a history saved by [`save_history`](Self::save_history) from an integrator of
+    /// the same N; the order and start mode stay this integrator's own.
+    pub fn restore_history(&mut self, h: &AbHistory) -> Result<(), AbError> {
+        let fits = h.derivs.len() == MAX_ORDER
+            && h.derivs.iter().all(|d| d.len() == N)
+            && h.newest < MAX_ORDER
+            && h.len <= MAX_ORDER;
+        if !fits {
+            return Err(AbError::HistoryShape);
+        }
+        self.times = h.times;
+        for (dst, src) in self.derivs.iter_mut().zip(&h.derivs) {
+            dst.copy_from_slice(src);
+        }
+        self.newest = h.newest;
+        self.len = h.len;
+        Ok(())
     }
 
     /// Ring index of the j-th newest entry.

@@ -7,10 +7,10 @@ mod coupling;
 mod rigid;
 mod strong;
 
-pub use adams::{ab_weights, AbError, AbStart, AdamsBashforth, MAX_ORDER};
+pub use adams::{ab_weights, AbError, AbHistory, AbStart, AdamsBashforth, MAX_ORDER};
 pub use coupling::{coupling_advice, ADVICE_MARGIN, PLATE_ADDED_INERTIA, PLATE_ADDED_MASS};
 pub use rigid::{
-    advance, body_to_inertial, inertial_to_body, state_derivative, wrap_angle, BodyState, Dof,
-    InertialLoads, PlateProps, RigidBody,
+    advance, body_to_inertial, inertial_to_body, state_derivative, wrap_angle, BodySnapshot,
+    BodyState, Dof, InertialLoads, PlateProps, RigidBody,
 };
 pub use strong::{Coupling, StrongCoupling};

@@ -6,7 +6,7 @@
 
 use std::f64::consts::PI;
 
-use super::adams::{AbError, AbStart, AdamsBashforth};
+use super::adams::{AbError, AbHistory, AbStart, AdamsBashforth};
 use crate::flow::Frame;
 
 /// Non-dimensional plate properties (SPEC §2): m* = m/(ρc²b), I* = I/(ρc⁴b), g* = g c/U², the
@@ -294,4 +294,32 @@ impl RigidBody {
         self.ab.step(t, &mut y, f, h);
         self.state = BodyState::from_array(y);
     }
+
+    /// The body's changing part, for a checkpoint: state, freedom and derivative history.
+    pub fn save(&self) -> BodySnapshot {
+        BodySnapshot {
+            state: self.state,
+            dof: self.dof,
+            history: self.ab.save_history(),
+        }
+    }
+
+    /// Puts back what [`save`](Self::save) returned (the properties stay this body's own).
+    pub fn restore(&mut self, snap: &BodySnapshot) -> Result<(), AbError> {
+        self.ab.restore_history(&snap.history)?;
+        self.state = snap.state;
+        self.dof = snap.dof;
+        Ok(())
+    }
+}
+
+/// A [`RigidBody`]'s changing part as plain data (a checkpoint's).
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct BodySnapshot {
+    /// The state.
+    pub state: BodyState,
+    /// The free degrees of freedom.
+    pub dof: Dof,
+    /// The integrator's stored derivatives.
+    pub history: AbHistory,
 }

@@ -34,6 +34,7 @@ mod momentum;
 mod plate;
 #[allow(missing_docs)]
 mod pressure;
+mod snapshot;
 mod split_cholesky;
 mod transport;
 mod wake;
@@ -49,6 +50,7 @@ pub use boundary::{OuterBc, VelocityFn};
 pub use frame::Frame;
 pub use metrics::{Axis, Metrics};
 pub use plate::BodyAxesLoads;
+pub use snapshot::{FlowState, StateMismatch};
 pub use zones::PlateCrossing;
 
 use boundary::Outflow;

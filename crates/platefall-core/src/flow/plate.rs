@@ -5,7 +5,7 @@ use super::frame::Frame;
 
 /// Force (body axes) and moment about the centre (counter-clockwise positive), per unit span,
 /// non-dimensional on ρU²c and ρU²c².
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct BodyAxesLoads {
     pub fx: f64,
     pub fy: f64,

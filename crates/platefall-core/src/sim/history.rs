@@ -94,7 +94,7 @@ impl Quantity {
 }
 
 /// What a retained sample knows about the steps since the previous retained one.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 struct Bucket {
     /// Index of the sample among all steps pushed (0-based).
     index: u64,
@@ -114,8 +114,10 @@ impl Bucket {
     }
 }
 
-/// A bounded history of the steps of a run; see the module docs.
-#[derive(Clone, Debug)]
+/// A bounded history of the steps of a run; see the module docs. Its serde form is the whole
+/// state (retained samples, their integrals and extremes, the running sums), so a history read
+/// back from a checkpoint goes on exactly as the saved one would have.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct History {
     samples: Vec<StepSample>,
     buckets: Vec<Bucket>,

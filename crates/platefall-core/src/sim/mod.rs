@@ -20,6 +20,7 @@
 //! }
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+mod checkpoint;
 mod checks;
 mod error;
 pub mod estimate;
@@ -30,6 +31,7 @@ mod sample;
 mod spec;
 mod timestep;
 
+pub use checkpoint::{RestoreError, SimState};
 pub use error::SimError;
 pub use history::{History, Quantity, DEFAULT_CAPACITY};
 pub use motion::{Case, CaseKind};
@@ -52,6 +54,9 @@ pub trait Observer {
     fn field(&mut self, snapshot: FieldSnapshot);
     /// Polled every step: stop cleanly when true (Ctrl-C).
     fn should_stop(&self) -> bool;
+    /// After every step (and its field snapshot): the run and the steps' history so far, e.g. to
+    /// save a checkpoint ([`Simulation::save`]). Does nothing unless implemented.
+    fn after_step(&mut self, _sim: &Simulation, _history: &History) {}
 }
 
 /// An observer that wants nothing and never stops the run: [`Simulation::run`] then returns the
@@ -270,7 +275,12 @@ impl Simulation {
 
     /// Runs to the end, reporting every step to `obs`.
     pub fn run(&mut self, obs: &mut dyn Observer) -> RunRecord {
-        let mut samples = History::default();
+        self.run_from(obs, History::default())
+    }
+
+    /// Runs to the end from where the run is, going on with the steps' history `samples` (empty
+    /// for a new run; a checkpoint's for a restored one, [`Simulation::restore`]).
+    pub fn run_from(&mut self, obs: &mut dyn Observer, mut samples: History) -> RunRecord {
         let status = loop {
             if obs.should_stop() {
                 break RunStatus::Interrupted;
@@ -282,6 +292,7 @@ impl Simulation {
                     if obs.wants_field(s.t) {
                         obs.field(self.snapshot());
                     }
+                    obs.after_step(self, &samples);
                     if self.finished() {
                         break RunStatus::Completed;
                     }

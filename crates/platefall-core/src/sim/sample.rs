@@ -6,7 +6,7 @@ use crate::body::{wrap_angle, BodyState};
 /// The plate's state is kept flat (the six fields of [`BodyState`] followed by the derived V, γ,
 /// α) so that every column is one field that [`Quantity`](super::Quantity) can index;
 /// [`StepSample::new`] fills them from a `BodyState` and [`StepSample::state`] gives it back.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct StepSample {
     /// Steps taken so far.
     pub step: u64,

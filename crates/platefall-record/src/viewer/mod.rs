@@ -84,7 +84,11 @@ impl Viewer {
         if let Some(url) = &set.serve_url {
             eprintln!("platefall: serving the run at {url} (open it with `rerun {url}`)");
         }
-        let rec = rerun::RecordingStreamBuilder::new(APPLICATION_ID)
+        let mut builder = rerun::RecordingStreamBuilder::new(APPLICATION_ID);
+        if let Some(id) = &opts.recording_id {
+            builder = builder.recording_id(id.clone());
+        }
+        let rec = builder
             .recording_name(info.title.clone())
             .enabled(true)
             .set_sinks(set.sinks)

@@ -47,6 +47,22 @@ pub struct Inputs<'a> {
 }
 
 impl Part {
+    /// What carries over from one step to the next (the increment with its line ends, and
+    /// L q of the previous step), for a checkpoint.
+    pub fn carried(&self) -> [&[f64]; 2] {
+        [&self.d.data, &self.lq_old.data]
+    }
+
+    /// Puts back what [`carried`](Self::carried) returned; false if the sizes differ.
+    pub fn restore_carried(&mut self, d: &[f64], lq_old: &[f64]) -> bool {
+        if d.len() != self.d.data.len() || lq_old.len() != self.lq_old.data.len() {
+            return false;
+        }
+        self.d.data.copy_from_slice(d);
+        self.lq_old.data.copy_from_slice(lq_old);
+        true
+    }
+
     pub fn new(c: Component, ni: usize, nj: usize, m: &Metrics) -> Part {
         let (ni_, nj_) = (ni as isize, nj as isize);
         let (ox, oy) = match c {

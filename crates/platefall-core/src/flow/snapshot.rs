@@ -1,0 +1,104 @@
+//! The flow solver's state between two steps as plain data ([`FlowState`]), for checkpoints: every
+//! field that one step hands to the next, with its ghost layers, bit for bit. What is computed
+//! once from the grid (metrics, the wall, the pressure factor, the zones) is not in it: a solver
+//! built anew from the same grid and parameters has it already.
+use super::{BodyAxesLoads, FlowSolver, Frame};
+
+/// The flow solver's state between two steps; see the module docs.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct FlowState {
+    /// Velocities, pressure and the explicit right-hand sides of the last two steps, each with
+    /// its ghost layers: u, v, p, Hu, Hv, Hu_old, Hv_old.
+    pub fields: Vec<Vec<f64>>,
+    /// The implicit far field's carried arrays (u's increment and L q, then v's), if it is used.
+    pub implicit: Option<Vec<Vec<f64>>>,
+    /// γ₂ of the last implicit step.
+    pub g2: f64,
+    /// The plate's motion at the current and the previous time level, and the extrapolated one.
+    pub frames: [Frame; 3],
+    /// Time, last step and step count.
+    pub t: f64,
+    /// The last step taken.
+    pub dt_prev: f64,
+    /// Steps taken.
+    pub steps: u64,
+    /// The loads at the current time level.
+    pub loads: BodyAxesLoads,
+}
+
+/// A saved flow state does not fit this solver (another grid or far-field scheme).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("the saved flow state does not fit this grid and scheme ({0})")]
+pub struct StateMismatch(pub &'static str);
+
+impl FlowSolver {
+    /// The state between two steps (call it after `advance`, not between `prepare` and
+    /// `advance`).
+    pub fn save_state(&self) -> FlowState {
+        let fields = [
+            &self.u.data,
+            &self.v.data,
+            &self.p,
+            &self.hu.data,
+            &self.hv.data,
+            &self.hu_old.data,
+            &self.hv_old.data,
+        ];
+        let implicit = self.implicit.as_ref().map(|s| {
+            let [ud, ul] = s.u.carried();
+            let [vd, vl] = s.v.carried();
+            vec![ud.to_vec(), ul.to_vec(), vd.to_vec(), vl.to_vec()]
+        });
+        FlowState {
+            fields: fields.iter().map(|f| f.to_vec()).collect(),
+            implicit,
+            g2: self.implicit.as_ref().map_or(0.0, |s| s.g2),
+            frames: [self.frame, self.frame_prev, self.guess],
+            t: self.t,
+            dt_prev: self.dt_prev,
+            steps: self.steps,
+            loads: self.loads,
+        }
+    }
+
+    /// Puts back a state saved by [`save_state`](Self::save_state) from a solver of the same
+    /// grid and parameters; the next step is then the one the saved solver would have taken.
+    pub fn restore_state(&mut self, s: &FlowState) -> Result<(), StateMismatch> {
+        let targets: [&mut Vec<f64>; 7] = [
+            &mut self.u.data,
+            &mut self.v.data,
+            &mut self.p,
+            &mut self.hu.data,
+            &mut self.hv.data,
+            &mut self.hu_old.data,
+            &mut self.hv_old.data,
+        ];
+        if s.fields.len() != targets.len()
+            || targets
+                .iter()
+                .zip(&s.fields)
+                .any(|(t, f)| t.len() != f.len())
+        {
+            return Err(StateMismatch("field sizes"));
+        }
+        match (&mut self.implicit, &s.implicit) {
+            (None, None) => {}
+            (Some(st), Some(a)) if a.len() == 4 => {
+                let ok = st.u.restore_carried(&a[0], &a[1]) && st.v.restore_carried(&a[2], &a[3]);
+                if !ok {
+                    return Err(StateMismatch("implicit far-field sizes"));
+                }
+                st.g2 = s.g2;
+            }
+            _ => return Err(StateMismatch("far-field scheme")),
+        }
+        for (t, f) in targets.into_iter().zip(&s.fields) {
+            t.copy_from_slice(f);
+        }
+        [self.frame, self.frame_prev, self.guess] = s.frames;
+        (self.t, self.dt_prev, self.steps) = (s.t, s.dt_prev, s.steps);
+        self.loads = s.loads;
+        self.prepared = false;
+        Ok(())
+    }
+}

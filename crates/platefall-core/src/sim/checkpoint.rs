@@ -1,0 +1,84 @@
+//! A run's state between two steps as plain data ([`SimState`]): the flow's fields and their
+//! time-level histories, the plate's state and Adams–Bashforth history, the release and
+//! turn-counting state, and the run's [`History`] (which holds the summary's accumulators). The
+//! time-step controller needs nothing else: it reads the flow's last step and the plate's rate.
+//!
+//! [`Simulation::save`] takes the snapshot and [`Simulation::restore`] builds a simulation from
+//! a validated configuration and puts it back, so the next step is the one the saved run would
+//! have taken, bit for bit. Writing it to a file is the caller's (the record crate's
+//! `checkpoint` module): the core does no I/O.
+use super::{History, Motion, Simulation, ValidatedConfig};
+use crate::body::{AbError, BodySnapshot, BodyState};
+use crate::flow::{FlowState, StateMismatch};
+
+/// A run's state between two steps; see the module docs.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct SimState {
+    /// The flow solver's fields and time levels.
+    pub flow: FlowState,
+    /// The plate's state.
+    pub state: BodyState,
+    /// The coupled plate's body (None for prescribed motion) and whether it is released.
+    pub body: Option<(BodySnapshot, bool)>,
+    /// θ at the release, for counting turns.
+    pub theta_release: Option<f64>,
+    /// Every step's samples so far (the summary's accumulators).
+    pub history: History,
+}
+
+/// Why a saved state cannot be put back into a run of this configuration.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RestoreError {
+    /// Building the run failed.
+    #[error(transparent)]
+    Build(#[from] super::SimError),
+    /// The flow fields do not fit the grid.
+    #[error(transparent)]
+    Flow(#[from] StateMismatch),
+    /// The plate's history does not fit.
+    #[error(transparent)]
+    Body(#[from] AbError),
+    /// A prescribed motion with a saved free body, or the other way round.
+    #[error("the saved state is of another motion law (prescribed versus coupled)")]
+    Motion,
+}
+
+impl Simulation {
+    /// The run's state between two steps, with the steps' `history` (what
+    /// [`Simulation::run_from`] has accumulated).
+    pub fn save(&self, history: &History) -> SimState {
+        let body = match &self.motion {
+            Motion::Prescribed => None,
+            Motion::Coupled { body, released, .. } => Some((body.save(), *released)),
+        };
+        SimState {
+            flow: self.flow.save_state(),
+            state: self.state,
+            body,
+            theta_release: self.theta_release,
+            history: history.clone(),
+        }
+    }
+
+    /// A run of `config` put back into `saved`; returns it and the steps' history to go on
+    /// with ([`Simulation::run_from`]). `config` may differ from the saved run's only in its end
+    /// (t_end, turns); the caller checks that.
+    pub fn restore(
+        config: ValidatedConfig,
+        saved: SimState,
+    ) -> Result<(Simulation, History), RestoreError> {
+        let mut sim = Simulation::new(config)?;
+        sim.flow.restore_state(&saved.flow)?;
+        match (&mut sim.motion, &saved.body) {
+            (Motion::Prescribed, None) => {}
+            (Motion::Coupled { body, released, .. }, Some((snap, was))) => {
+                body.restore(snap)?;
+                *released = *was;
+            }
+            _ => return Err(RestoreError::Motion),
+        }
+        sim.state = saved.state;
+        sim.theta_release = saved.theta_release;
+        Ok((sim, saved.history))
+    }
+}

@@ -1,0 +1,103 @@
+//! Writing a run's checkpoints: at the `--checkpoint-every` cadence, at a stop (SIGTERM, SIGUSR1,
+//! the first Ctrl-C) and, with a cadence, at the end. The state comes from the core
+//! ([`Simulation::save`]); the file from the record crate ([`write_checkpoint`]).
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use platefall_core::sim::{History, Simulation};
+use platefall_record::checkpoint::{write_checkpoint, Checkpoint, ResumeInfo};
+use platefall_record::output::OutputError;
+
+/// The checkpoints of one run.
+pub struct Checkpointer {
+    path: PathBuf,
+    every: Option<f64>,
+    next_t: f64,
+    info: ResumeInfo,
+    program: String,
+    /// Checkpoints written, their last size, and the time spent writing them.
+    pub written: u64,
+    /// The last one's size in bytes.
+    pub bytes: u64,
+    /// Seconds spent taking and writing them.
+    pub seconds: f64,
+}
+
+impl Checkpointer {
+    /// Checkpoints to `path` every `every` convective times (None: only at a stop and on
+    /// demand), for a run at time `t` now.
+    pub fn new(
+        path: PathBuf,
+        every: Option<f64>,
+        t: f64,
+        info: ResumeInfo,
+        program: String,
+    ) -> Self {
+        let mut c = Checkpointer {
+            path,
+            every,
+            next_t: f64::INFINITY,
+            info,
+            program,
+            written: 0,
+            bytes: 0,
+            seconds: 0.0,
+        };
+        c.schedule_after(t);
+        c
+    }
+
+    /// The file.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// Whether a cadence was asked for (then the run's end writes one too).
+    pub fn periodic(&self) -> bool {
+        self.every.is_some()
+    }
+
+    /// The next multiple of the cadence after `t`.
+    fn schedule_after(&mut self, t: f64) {
+        if let Some(e) = self.every {
+            let eps = 1e-9 * e.max(1.0);
+            self.next_t = ((t + eps) / e).floor() * e + e;
+        }
+    }
+
+    /// After a step: writes a checkpoint if one is due at the run's time.
+    pub fn after_step(&mut self, sim: &Simulation, history: &History) -> Result<(), OutputError> {
+        let t = sim.flow().t();
+        let eps = 1e-9 * self.every.unwrap_or(1.0).max(1.0);
+        if t + eps < self.next_t {
+            return Ok(());
+        }
+        self.schedule_after(t);
+        self.write(sim, history)
+    }
+
+    /// Writes a checkpoint of the run as it is now.
+    pub fn write(&mut self, sim: &Simulation, history: &History) -> Result<(), OutputError> {
+        let start = Instant::now();
+        let ckpt = Checkpoint {
+            program: self.program.clone(),
+            resume: self.info.clone(),
+            sim: sim.save(history),
+        };
+        self.bytes = write_checkpoint(&self.path, &ckpt)?;
+        self.written += 1;
+        self.seconds += start.elapsed().as_secs_f64();
+        Ok(())
+    }
+
+    /// One line for the end of the run: where, how many, how big, how long.
+    pub fn report_line(&self) -> String {
+        format!(
+            "checkpoint: {} ({:.1} MB; {} written in {:.2} s)",
+            self.path.display(),
+            self.bytes as f64 / 1e6,
+            self.written,
+            self.seconds
+        )
+    }
+}

@@ -1,0 +1,204 @@
+//! `platefall resume CHECKPOINT`: goes on with a run from its checkpoint. The run description is
+//! rebuilt from the checkpoint's command line and must be the one the checkpoint holds; only its
+//! end may change (`--t-end`, `--turns`). The CSV is rewritten as the earlier rows plus the new
+//! ones (byte for byte the uninterrupted run's), the summary is the whole run's, and the
+//! recording is a continuation `.rrd` with the same recording id (the viewer opens both as one).
+use std::path::{Path, PathBuf};
+
+use anyhow::Context as _;
+use clap::Args;
+
+use super::args::CheckpointArgs;
+use super::checkpointer::Checkpointer;
+use super::command::{parse, Command};
+use super::config::run_config;
+use super::record_args::RecordArgs;
+use super::run::{command_line, execute, version, Started};
+use super::signals::Interrupts;
+use crate::exit::Exit;
+use platefall_core::sim::{CaseKind, Simulation, ValidatedConfig};
+use platefall_record::checkpoint::{read_checkpoint, Checkpoint, ResumeInfo};
+use platefall_record::messages::RunInfo;
+use platefall_record::RecordOptions;
+
+/// `platefall resume`'s options.
+#[derive(Args, Debug, Clone)]
+pub struct ResumeArgs {
+    /// The checkpoint file (written by --checkpoint-every or at a stop)
+    pub file: PathBuf,
+    /// A new end time (later than the checkpoint's time) [default: the run's]
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub t_end: Option<f64>,
+    /// A new number of net turns after release [default: the run's]
+    #[arg(long, value_name = "N")]
+    pub turns: Option<f64>,
+    /// Worker threads (0: one per core) [default: the run's]; the results do not depend on it
+    #[arg(long)]
+    pub threads: Option<usize>,
+    /// The CSV [default: the run's; it is rewritten with the earlier rows first]
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
+    /// The continuation recording [default: the run's with -from-STEP before .rrd]
+    #[arg(long, value_name = "FILE.rrd", conflicts_with = "no_save")]
+    pub save: Option<PathBuf>,
+    /// No continuation recording
+    #[arg(long)]
+    pub no_save: bool,
+    /// The summary JSON [default: the run's]
+    #[arg(long, value_name = "FILE")]
+    pub summary: Option<PathBuf>,
+    /// No progress output
+    #[arg(long, short = 'q')]
+    pub quiet: bool,
+    /// Checkpoint cadence [default: the run's]
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub checkpoint_every: Option<f64>,
+    /// The checkpoint file to write [default: the one resumed from]
+    #[arg(long, value_name = "FILE")]
+    pub checkpoint: Option<PathBuf>,
+    /// Test hook: stop (as SIGTERM does) after this many steps in all
+    #[arg(long, value_name = "N", hide = true)]
+    pub stop_after_steps: Option<u64>,
+}
+
+/// Why a checkpoint cannot be resumed as asked (besides a bad file).
+#[derive(Debug, thiserror::Error)]
+pub enum ResumeRefusal {
+    /// The checkpoint's command line no longer describes a case.
+    #[error("checkpoint {}: its command line does not describe a run any more: {why}", .file.display())]
+    CommandLine {
+        /// The checkpoint.
+        file: PathBuf,
+        /// Why.
+        why: String,
+    },
+    /// The command line builds another run description than the checkpoint's.
+    #[error("checkpoint {}: its command line now builds another run than the checkpoint holds (a file it reads changed, or run it from the directory it was started in)", .0.display())]
+    ConfigChanged(PathBuf),
+    /// The earlier CSV does not hold the rows up to the checkpoint.
+    #[error("--csv: cannot resume it: {0}")]
+    Csv(String),
+    /// The run would already be over under the end asked for.
+    #[error("{end}: the checkpoint is at t = {t:.4}; the run would already be over (give a later --t-end or more --turns)")]
+    AlreadyOver {
+        /// The end, e.g. "--t-end 3" or "the run's end".
+        end: String,
+        /// The checkpoint's time.
+        t: f64,
+    },
+}
+
+/// Runs `platefall resume`.
+pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
+    let cadence = CheckpointArgs {
+        checkpoint_every: args.checkpoint_every,
+        ..CheckpointArgs::default()
+    };
+    cadence.every()?;
+    let ckpt = read_checkpoint(&args.file, &version())?;
+    let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
+        file: args.file.clone(),
+        why: e.kind().to_string(),
+    })?;
+    let Some((solver, record)) = cmd.command.case_args() else {
+        anyhow::bail!(ResumeRefusal::CommandLine {
+            file: args.file.clone(),
+            why: "not a case subcommand".into()
+        });
+    };
+    let config = resumed_config(&cmd.command, &ckpt, args)?;
+    let mut info = ckpt.resume.clone();
+    (info.t_end, info.turns) = (config.time.t_end, config.time.turns);
+    let opts = resumed_outputs(record, &mut info, &ckpt, args, config.case.kind())?;
+    let every = args.checkpoint_every.or(info.every);
+    info.every = every;
+    let interrupts = Interrupts::install()?;
+    let run_info = RunInfo::new(&config, command_line(), version());
+    let t = ckpt.sim.flow.t;
+    let (sim, history) = Simulation::restore(config, ckpt.sim)?;
+    if sim.finished() {
+        let end = match (args.t_end, args.turns) {
+            (Some(te), _) => format!("--t-end {te}"),
+            (None, Some(n)) => format!("--turns {n}"),
+            (None, None) => "the run's end".into(),
+        };
+        anyhow::bail!(ResumeRefusal::AlreadyOver { end, t });
+    }
+    let path = args.checkpoint.clone().unwrap_or_else(|| args.file.clone());
+    let started = Started {
+        sim,
+        history,
+        summary_path: info.summary.clone(),
+        opts,
+        threads: args.threads.unwrap_or(solver.threads),
+        checkpoints: Some(Checkpointer::new(path, every, t, info, version())),
+        stop_after: args.stop_after_steps,
+    };
+    execute(started, run_info, &interrupts)
+}
+
+/// The run description: the checkpoint's command line rebuilt, checked against the checkpoint,
+/// with the end asked for.
+fn resumed_config(
+    cmd: &Command,
+    ckpt: &Checkpoint,
+    args: &ResumeArgs,
+) -> anyhow::Result<ValidatedConfig> {
+    let config = run_config(cmd)?;
+    if serde_json::to_string_pretty(&config)? != ckpt.resume.config_json {
+        anyhow::bail!(ResumeRefusal::ConfigChanged(args.file.clone()));
+    }
+    let mut c = config.config().clone();
+    c.time.t_end = args.t_end.unwrap_or(ckpt.resume.t_end);
+    c.time.turns = args.turns.or(ckpt.resume.turns);
+    Ok(c.validate().map_err(super::flags::ArgError::from)?)
+}
+
+/// The resumed run's outputs: the run's own (the CSV rewritten with its earlier rows, a
+/// continuation recording), or those given; `info` takes them for the next checkpoint.
+fn resumed_outputs(
+    record: &RecordArgs,
+    info: &mut ResumeInfo,
+    ckpt: &Checkpoint,
+    args: &ResumeArgs,
+    kind: CaseKind,
+) -> anyhow::Result<RecordOptions> {
+    let steps = ckpt.sim.flow.steps;
+    let mut r = record.clone();
+    r.csv = args.csv.clone().or(info.csv.clone());
+    r.save = match (&args.save, &info.save) {
+        (Some(p), _) => Some(p.clone()),
+        (None, Some(p)) => Some(continuation(p, steps)),
+        (None, None) => None,
+    };
+    r.no_save = args.no_save || r.save.is_none();
+    r.quiet |= args.quiet;
+    let summary = args.summary.clone().or(info.summary.clone());
+    let ckpt_path = args.checkpoint.clone().unwrap_or_else(|| args.file.clone());
+    let others: Vec<(&'static str, &Path)> = summary
+        .iter()
+        .map(|p| ("--summary", p.as_path()))
+        .chain([("--checkpoint", ckpt_path.as_path())])
+        .collect();
+    let mut opts = r.resolve(kind, &others)?;
+    opts.csv_prefix = match (&opts.csv, &info.csv) {
+        (Some(_), Some(earlier)) => {
+            platefall_record::check_csv_prefix(earlier, steps).map_err(ResumeRefusal::Csv)?;
+            Some((earlier.clone(), steps))
+        }
+        _ => None,
+    };
+    opts.recording_id = info.recording_id.clone();
+    let abs = |p: &Option<PathBuf>| p.as_deref().map(std::path::absolute).transpose();
+    info.csv = abs(&opts.csv).context("the CSV's path")?;
+    info.summary = abs(&summary).context("the summary's path")?;
+    Ok(opts)
+}
+
+/// The continuation recording beside `rrd`: `NAME-from-STEP.rrd`.
+fn continuation(rrd: &Path, steps: u64) -> PathBuf {
+    let stem = rrd.file_stem().map(|s| s.to_string_lossy().into_owned());
+    let stem = stem.unwrap_or_else(|| "run".into());
+    let base = stem.split("-from-").next().unwrap_or(&stem).to_string();
+    rrd.with_file_name(format!("{base}-from-{steps}.rrd"))
+}

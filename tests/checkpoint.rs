@@ -1,0 +1,149 @@
+//! Checkpoints and `platefall resume`: a run stopped (by the test hook, by SIGTERM, by SIGUSR1) and
+//! resumed, any number of times, writes the CSV of the uninterrupted run byte for byte and the
+//! same summary (but for the wall time); see also `tests/checkpoint_refusals.rs`.
+mod checkpoint_common;
+
+use std::time::{Duration, Instant};
+
+use checkpoint_common::*;
+
+/// The card's free fall at N = 16, released at t = 1, to t = 4 (≈ 840 steps).
+const FREE: &[&str] = &[
+    "free",
+    "--resolution",
+    "16",
+    "--develop",
+    "1",
+    "--t-end",
+    "4",
+];
+
+#[test]
+fn a_free_fall_stopped_three_times_resumes_exactly() {
+    let dir = scratch("free");
+    run_full(&dir, FREE);
+    // Before the release, just after it, and late; resumed on 2, 1 and 2 threads.
+    run_stopped(&dir, FREE, "0.5", &[90, 260, 700], &["1", "2"]);
+    assert_same_outputs(&dir);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_static_run_resumes_exactly() {
+    let dir = scratch("static");
+    let case = ["static", "--resolution", "16", "--t-end", "3"];
+    run_full(&dir, &case);
+    run_stopped(&dir, &case, "1", &[150, 400], &["2"]);
+    assert_same_outputs(&dir);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_light_plate_in_water_resumes_exactly() {
+    let dir = scratch("water");
+    let case = [
+        "free",
+        "--chord-mm",
+        "16",
+        "--thickness-mm",
+        "0.5",
+        "--plate-density",
+        "2700",
+        "--fluid",
+        "water",
+        "--theta0",
+        "0.3",
+        "--resolution",
+        "16",
+        "--t-end",
+        "2",
+    ];
+    run_full(&dir, &case);
+    run_stopped(&dir, &case, "0.5", &[120, 250], &["1"]);
+    assert_same_outputs(&dir);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Starts the free fall with checkpoints, waits for its first periodic checkpoint (t = 1.5,
+/// after the release), sends `signal` and resumes it to its end.
+fn stop_by_signal(name: &str, signal: i32) {
+    let dir = scratch(name);
+    run_full(&dir, FREE);
+    let mut args: Vec<String> = FREE.iter().map(|s| s.to_string()).collect();
+    args.extend(outputs("cut"));
+    args.extend(["--checkpoint-every".into(), "1.5".into()]);
+    let mut child = std::process::Command::new(PF)
+        .args(&args)
+        .current_dir(&dir)
+        .stderr(std::process::Stdio::null())
+        .stdout(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    while !dir.join("cut.ckpt").exists() && start.elapsed() < Duration::from_secs(60) {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    // SAFETY: signalling our own child process by its id.
+    unsafe { libc::kill(child.id() as libc::pid_t, signal) };
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(75), "{status:?}");
+    let trailer = String::from_utf8(read(&dir, "cut.csv")).unwrap();
+    assert!(
+        trailer.contains("status=interrupted"),
+        "the CSV says it stopped"
+    );
+    expect_code(&run(&dir, &["resume", "cut.ckpt", "-q"]), 0);
+    assert_same_outputs(&dir);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_free_fall_stopped_by_sigterm_resumes_exactly() {
+    stop_by_signal("sigterm", libc::SIGTERM);
+}
+
+#[test]
+fn a_free_fall_stopped_by_sigusr1_resumes_exactly() {
+    stop_by_signal("sigusr1", libc::SIGUSR1);
+}
+
+#[test]
+fn a_completed_run_is_extended_from_its_last_checkpoint() {
+    let dir = scratch("extend");
+    let case = ["static", "--resolution", "16", "--t-end", "1"];
+    let mut args: Vec<String> = case.iter().map(|s| s.to_string()).collect();
+    args.extend(outputs("cut"));
+    args.extend(["--checkpoint-every".into(), "0.5".into()]);
+    expect_code(&run(&dir, &strs(&args)), 0);
+    let before = read(&dir, "cut.csv");
+    expect_code(
+        &run(&dir, &["resume", "cut.ckpt", "--t-end", "1.5", "-q"]),
+        0,
+    );
+    let after = String::from_utf8(read(&dir, "cut.csv")).unwrap();
+    let rows = |s: &str| s.lines().filter(|l| !l.starts_with('#')).count();
+    let old = String::from_utf8(before).unwrap();
+    assert!(rows(&after) > rows(&old), "more rows after the extension");
+    let kept: Vec<&str> = old.lines().filter(|l| !l.starts_with('#')).collect();
+    assert!(
+        after.lines().zip(&kept).all(|(a, b)| a == *b),
+        "the earlier rows kept"
+    );
+    let trailer = after.lines().last().unwrap();
+    assert!(trailer.contains("status=completed"), "{trailer}");
+    let t: f64 = after
+        .lines()
+        .rev()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(
+        (t - 1.5).abs() < 1e-9,
+        "the run goes on to the new end: {t}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

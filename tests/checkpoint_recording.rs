@@ -1,0 +1,36 @@
+//! The recording of a resumed run: a continuation `.rrd` beside the first, complete, with the
+//! same recording id (the viewer opens both as one run) and the steps after the checkpoint.
+mod checkpoint_common;
+mod record_common;
+
+use checkpoint_common::*;
+
+#[test]
+fn a_resumed_run_records_a_continuation_with_the_same_recording_id() {
+    let dir = scratch("recording");
+    let case = [
+        "static",
+        "--resolution",
+        "16",
+        "--t-end",
+        "1.5",
+        "--save",
+        "a.rrd",
+        "-q",
+    ];
+    let stop = ["--checkpoint-every", "0.5", "--stop-after-steps", "100"];
+    expect_code(&run(&dir, &[&case[..], &stop].concat()), 75);
+    expect_code(&run(&dir, &["resume", "a.ckpt", "-q"]), 0);
+    let first = record_common::decode(&dir.join("a.rrd"));
+    let next = record_common::decode(&dir.join("a-from-100.rrd"));
+    assert!(
+        first.has_footer && next.has_footer,
+        "both recordings are complete"
+    );
+    assert_eq!(first.recording_ids.len(), 1, "{:?}", first.recording_ids);
+    assert_eq!(first.recording_ids, next.recording_ids);
+    let steps = |d: &record_common::Decoded| d.scalars("/solver/dt").len();
+    assert_eq!(steps(&first), 100);
+    assert!(steps(&next) > 0, "the continuation holds the later steps");
+    let _ = std::fs::remove_dir_all(&dir);
+}
