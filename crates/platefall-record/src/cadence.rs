@@ -25,13 +25,21 @@ impl Cadence {
     /// at or past each multiple of the interval). A true answer moves on to the next multiple,
     /// so ask once per step.
     pub fn due(&mut self, t: f64) -> bool {
-        let fe = self.every;
-        let eps = 1e-9 * fe.max(1.0);
-        if t + eps >= self.next {
-            self.next = ((t + eps) / fe).floor() * fe + fe;
+        if t + self.eps() >= self.next {
+            self.skip_to(t);
             true
         } else {
             false
         }
+    }
+
+    /// Goes on after time `t` as if a snapshot had been taken at `t` (a resumed run).
+    pub fn skip_to(&mut self, t: f64) {
+        let fe = self.every;
+        self.next = ((t + self.eps()) / fe).floor() * fe + fe;
+    }
+
+    fn eps(&self) -> f64 {
+        1e-9 * self.every.max(1.0)
     }
 }

@@ -261,9 +261,10 @@ impl Logger {
     /// the saved run's would have (a new run, `steps` = 0, starts with a snapshot).
     pub fn resume_fields_at(&mut self, t: f64, steps: u64) {
         if steps > 0 {
-            let fe = self.field_every;
-            let eps = 1e-9 * fe.max(1.0);
-            self.next_field_t = ((t + eps) / fe).floor() * fe + fe;
+            self.fields.skip_to(t);
+            if let Some(v) = self.vtk.as_mut() {
+                v.skip_to(t);
+            }
         }
     }
 
