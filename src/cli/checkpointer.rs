@@ -7,12 +7,13 @@ use std::time::Instant;
 use platefall_core::sim::{History, Simulation};
 use platefall_record::checkpoint::{write_checkpoint, Checkpoint, ResumeInfo};
 use platefall_record::output::OutputError;
+use platefall_record::Cadence;
 
 /// The checkpoints of one run.
 pub struct Checkpointer {
     path: PathBuf,
-    every: Option<f64>,
-    next_t: f64,
+    /// The `--checkpoint-every` cadence (none: only at a stop and on demand).
+    cadence: Option<Cadence>,
     info: ResumeInfo,
     program: String,
     /// Checkpoints written, their last size, and the time spent writing them.
@@ -33,18 +34,20 @@ impl Checkpointer {
         info: ResumeInfo,
         program: String,
     ) -> Self {
-        let mut c = Checkpointer {
+        let cadence = every.map(|e| {
+            let mut c = Cadence::new(e);
+            c.skip_to(t);
+            c
+        });
+        Checkpointer {
             path,
-            every,
-            next_t: f64::INFINITY,
+            cadence,
             info,
             program,
             written: 0,
             bytes: 0,
             seconds: 0.0,
-        };
-        c.schedule_after(t);
-        c
+        }
     }
 
     /// The file.
@@ -54,25 +57,15 @@ impl Checkpointer {
 
     /// Whether a cadence was asked for (then the run's end writes one too).
     pub fn periodic(&self) -> bool {
-        self.every.is_some()
-    }
-
-    /// The next multiple of the cadence after `t`.
-    fn schedule_after(&mut self, t: f64) {
-        if let Some(e) = self.every {
-            let eps = 1e-9 * e.max(1.0);
-            self.next_t = ((t + eps) / e).floor() * e + e;
-        }
+        self.cadence.is_some()
     }
 
     /// After a step: writes a checkpoint if one is due at the run's time.
     pub fn after_step(&mut self, sim: &Simulation, history: &History) -> Result<(), OutputError> {
         let t = sim.flow().t();
-        let eps = 1e-9 * self.every.unwrap_or(1.0).max(1.0);
-        if t + eps < self.next_t {
+        if !self.cadence.as_mut().is_some_and(|c| c.due(t)) {
             return Ok(());
         }
-        self.schedule_after(t);
         self.write(sim, history)
     }
 

@@ -1,4 +1,5 @@
-//! When field snapshots are due: the first step, then every multiple of a convective interval.
+//! When snapshots are due (flow fields, VTK files, checkpoints): the first step, then every
+//! multiple of a convective interval.
 
 /// A cadence of snapshots every `every` convective times (see [`Cadence::due`]).
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -229,10 +229,7 @@ impl FlowSolver {
         let wall = Wall::new(&grid, &metrics, nu);
         let pressure = Pressure::new(&grid, &metrics, &wall.faces)
             .map_err(|e| FlowError::Setup(SetupError::Pressure { reason: e.0 }))?;
-        let min_dx = grid.dx.iter().copied().fold(f64::INFINITY, f64::min);
-        let min_dy = grid.dy.iter().copied().fold(f64::INFINITY, f64::min);
-        let dt_visc =
-            params.visc_safety / (4.0 * nu * (1.0 / (min_dx * min_dx) + 1.0 / (min_dy * min_dy)));
+        let dt_visc = viscous_dt_limit(&grid, &params);
         let (nx, ny) = (grid.nx, grid.ny);
         let (zones, implicit) = far_field_state(&grid, &params, &metrics)?;
         let mut s = FlowSolver {
@@ -538,6 +535,15 @@ impl FlowSolver {
 
 /// The split lines and the implicit workspaces for the far-field scheme of `params` (none for
 /// the explicit scheme); the split lines must not cross the plate.
+/// The explicit viscous limit of the flow step, `visc_safety / (4ν (1/Δx² + 1/Δy²))` on the
+/// smallest cells (SPEC §6 "Time step").
+pub fn viscous_dt_limit(grid: &Grid, params: &FlowParams) -> f64 {
+    let min = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
+    let (dx, dy) = (min(&grid.dx), min(&grid.dy));
+    let nu = 1.0 / params.re;
+    params.visc_safety / (4.0 * nu * (1.0 / (dx * dx) + 1.0 / (dy * dy)))
+}
+
 /// The largest stable Δt of the explicit (Adams–Bashforth 2) near field, SPEC §6 "Time step":
 /// the harmonic combination 1/Δt = 1/Δt_conv + 1/Δt_visc of the convective limit
 /// Δt_conv = CFL / max(|w_x|/Δx + |w_y|/Δy) (`rate`: that maximum) and the viscous limit.

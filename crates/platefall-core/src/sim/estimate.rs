@@ -12,8 +12,6 @@
 //!   u32 row index), plus 16 MB and 24 B per cell per queued field snapshot with a Rerun sink;
 //! - a step costs ≈ 120 ns per cell (`platefall bench`, docs/performance.md).
 use super::spec::ValidatedConfig;
-use crate::flow::FlowParams;
-use crate::grid::Grid;
 
 /// Fixed memory of the program without a recording (bytes).
 const BASE_BYTES: f64 = 8e6;
@@ -82,18 +80,10 @@ pub fn factor_nonzeros(nx: usize, ny: usize) -> f64 {
     per_cell.max(8.0) * nx as f64 * ny as f64
 }
 
-/// The explicit viscous limit of the flow step: `visc_safety / (4ν (1/Δx² + 1/Δy²))` on the
-/// smallest cells (as in `FlowSolver::new`; keep the two in step).
-pub fn viscous_dt_limit(grid: &Grid, flow: &FlowParams) -> f64 {
-    let min = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
-    let (dx, dy) = (min(&grid.dx), min(&grid.dy));
-    flow.visc_safety * flow.re / (4.0 * (1.0 / (dx * dx) + 1.0 / (dy * dy)))
-}
-
 /// Estimates a run's cost from its description and grid (nothing else is built).
 pub fn estimate(config: &ValidatedConfig) -> Estimate {
     let grid = config.grid();
-    let visc = viscous_dt_limit(grid, &config.flow);
+    let visc = crate::flow::viscous_dt_limit(grid, &config.flow);
     let (dt_floor, dt_floor_from) = if visc < config.time.dt_max {
         (visc, DtFloor::Viscous)
     } else {

@@ -243,12 +243,13 @@ fn arcs(body: &Outline) -> Vec<Arc> {
     let n = body.len();
     let normals: Vec<[f64; 2]> = (0..n).map(|k| body.normal(k)).collect();
     let vertical = |nr: [f64; 2]| nr[1].abs() >= nr[0].abs();
-    let starts: Vec<usize> = (0..n)
-        .filter(|&k| {
-            let (a, b) = (normals[(k + n - 1) % n], normals[k]);
-            vertical(a) != vertical(b) || a[0] * b[0] + a[1] * b[1] < CORNER_COS
-        })
-        .collect();
+    // Whether edge k turns from the edge before it by more than 45° (a corner).
+    let corner = |k: usize| {
+        let (a, b) = (normals[(k + n - 1) % n], normals[k]);
+        a[0] * b[0] + a[1] * b[1] < CORNER_COS
+    };
+    let family_changes = |k: usize| vertical(normals[(k + n - 1) % n]) != vertical(normals[k]);
+    let starts: Vec<usize> = (0..n).filter(|&k| family_changes(k) || corner(k)).collect();
     let starts = if starts.is_empty() { vec![0] } else { starts };
     let mut out = Vec::with_capacity(starts.len());
     for (m, &first) in starts.iter().enumerate() {
@@ -266,10 +267,9 @@ fn arcs(body: &Outline) -> Vec<Arc> {
             let (a, b) = body.edge(e);
             s += (b[0] - a[0]).hypot(b[1] - a[1]);
         }
-        let (a, b) = (normals[(first + n - 1) % n], normals[first]);
         out.push(Arc {
             vertical: vertical(normals[first]),
-            corner: a[0] * b[0] + a[1] * b[1] < CORNER_COS,
+            corner: corner(first),
             edges,
             start_s,
             length: s,
