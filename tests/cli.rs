@@ -40,6 +40,8 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         ("free --inertia -0.1", "--inertia"),
         ("pinned --preset none", "--mass"),
         ("free --ab-order 7", "1..=6"),
+        ("free --average-from-turn 0", "--average-from-turn 0"),
+        ("free --turns 20 --average-from-turn 20", "accepted 1..=19"),
         ("free --displaced-mass -1", "[0, 1000000]"),
         ("pinned --torque 1e9", "[-1000, 1000]"),
         ("pinned --v0 -1", "[0, 10]"),

@@ -18,6 +18,7 @@ pub fn flag(p: Param) -> &'static str {
         Param::DtMax => "--dt-max",
         Param::Cc => "--cc",
         Param::Turns => "--turns",
+        Param::AverageFromTurn => "--average-from-turn",
         Param::Alpha => "--alpha",
         Param::Kick => "--kick",
         Param::ForcedOmega => "--rate",

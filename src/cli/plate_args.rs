@@ -51,6 +51,10 @@ pub struct BodyArgs {
     /// [default: 10 for free, none for pinned].
     #[arg(long, allow_negative_numbers = true)]
     pub turns: Option<f64>,
+    /// Average the summary's means and their intervals over the whole turns from this complete
+    /// turn after release on, leaving the earlier turns to the transient (1..=turns−1).
+    #[arg(long, default_value_t = 1)]
+    pub average_from_turn: usize,
     #[command(flatten)]
     pub physical: PhysicalArgs,
 }
@@ -198,7 +202,7 @@ macro_rules! coupled_builder {
                 if let Some(n) = a.turns {
                     b = b.turns(n);
                 }
-                b
+                b.average_from_turn(a.average_from_turn)
             }
         }
     };

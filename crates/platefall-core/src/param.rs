@@ -39,6 +39,8 @@ pub enum Param {
     Cc,
     /// Net turns after release that end the run.
     Turns,
+    /// The complete turn after release from which the summary averages.
+    AverageFromTurn,
     /// Angle of attack of a static plate.
     Alpha,
     /// The static plate's start-up nudge.
@@ -106,6 +108,7 @@ impl Param {
             Param::DtMax => "time-step ceiling",
             Param::Cc => "rotation rule C_c",
             Param::Turns => "turns",
+            Param::AverageFromTurn => "first averaged turn",
             Param::Alpha => "angle of attack α (rad)",
             Param::Kick => "start-up kick (rad)",
             Param::ForcedOmega => "forced rotation rate θ̇ (c/U)",

@@ -763,6 +763,24 @@ mod tests {
     }
 
     #[test]
+    fn averaging_from_a_later_turn_leaves_the_transient_out() {
+        // Turns 0..10 at 2.0, then 3.0 for 20 turns: from the first turn the mean mixes both and
+        // drifts; from turn 10 on it is the settled 3.0 alone, over the 19 whole turns after it.
+        let mut cfg = free();
+        let rate = |_: f64, turn: usize| if turn < 10 { 2.0 } else { 3.0 };
+        let rec = record(tumbling(rate, 30.0));
+        let all = summarize(&cfg, &rec, 0.0);
+        assert!(all.mean_omega.unwrap() < 2.8, "{:?}", all.mean_omega);
+        cfg.time.average_from_turn = 10;
+        let s = summarize(&cfg, &rec, 0.0);
+        assert!((s.mean_omega.unwrap() - 3.0).abs() < 1e-3, "{:?}", s.mean_omega);
+        assert!((s.developed_from.unwrap() - 10.0 * PI).abs() < 0.01, "{s:?}");
+        assert_eq!(s.ci.intervals["mean_omega"].count, 19);
+        assert_eq!(s.ci.intervals["mean_omega"].drift_significant, Some(false));
+        assert!(s.developed_rule.contains("turn 10"), "{}", s.developed_rule);
+    }
+
+    #[test]
     fn turns_that_alternate_are_flagged() {
         // Odd and even turns at two rates (a period-two tumble).
         let cfg = free();

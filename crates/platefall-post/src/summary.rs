@@ -107,7 +107,7 @@ pub struct PhysicalKeys {
 }
 
 /// The developed window: for coupled cases the whole turns after autorotation is established (the
-/// first complete turn after release), or, for a plate that makes no two whole turns, the regime
+/// first complete turn after release, or the turn `--average-from-turn` names), or, for a plate that makes no two whole turns, the regime
 /// window trimmed to whole periods of its motion; for forced rotation the whole half-turns after
 /// spin-up plus one half-turn; for the static case the second half of the run, trimmed to whole lift
 /// periods.
@@ -154,21 +154,28 @@ fn developed(
                 None,
             )
         }
-        Case::Pinned { .. } | Case::Free { .. } => coupled_window(rec, motion),
+        Case::Pinned { .. } | Case::Free { .. } => {
+            coupled_window(rec, config.time.average_from_turn, motion)
+        }
     }
 }
 
 /// The developed window of a coupled run (see [`developed`]).
 fn coupled_window(
     rec: &RunRecord,
+    from_turn: usize,
     motion: Option<&(TimeWindow, MotionClass)>,
 ) -> (Option<TimeWindow>, String, Option<f64>) {
     let turns = count_turns(&rec.samples, rec.t_release);
     let established = turns.completed.first().copied();
-    if let (Some(a), Some(&b)) = (established, turns.completed.last()) {
+    let from = turns.completed.get(from_turn.max(1) - 1).copied();
+    if let (Some(a), Some(&b)) = (from, turns.completed.last()) {
         if b > a {
-            let rule = "whole turns after the first complete turn following release";
-            return (Some(TimeWindow { t0: a, t1: b }), rule.into(), established);
+            let rule = match from_turn {
+                1 => "whole turns after the first complete turn following release".into(),
+                k => format!("whole turns after complete turn {k} following release"),
+            };
+            return (Some(TimeWindow { t0: a, t1: b }), rule, established);
         }
     }
     match motion {

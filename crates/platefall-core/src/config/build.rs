@@ -165,6 +165,7 @@ struct BodyOptions {
     ab_start: AbStart,
     develop: Option<f64>,
     turns: Option<f64>,
+    average_from_turn: usize,
 }
 
 impl BodyOptions {
@@ -176,6 +177,7 @@ impl BodyOptions {
             ab_start: AbStart::Ramp,
             develop: None,
             turns,
+            average_from_turn: 1,
         }
     }
 
@@ -410,6 +412,13 @@ macro_rules! coupled_options {
                 self
             }
 
+            /// Average the summary over the whole turns from this complete turn after release on,
+            /// leaving the earlier ones to the transient [default: 1].
+            pub fn average_from_turn(mut self, turn: usize) -> Self {
+                self.case.body.average_from_turn = turn;
+                self
+            }
+
             /// Run to the end time whatever the plate's turns.
             pub fn without_turn_limit(mut self) -> Self {
                 self.case.body.turns = None;
@@ -575,6 +584,7 @@ impl Options {
             body.turns,
             thickness,
         );
+        config.time.average_from_turn = body.average_from_turn;
         // A physical plate's mass, buoyancy and inertia are those of its section (the seed's grid
         // keeps the plate's own rectangle).
         let strip = body.plate.physical_strip().filter(|_| modern);
@@ -637,6 +647,7 @@ impl Options {
                 turns,
                 dt_max: self.dt_max,
                 cc: self.cc,
+                average_from_turn: 1,
             },
             case,
         }

@@ -106,6 +106,15 @@ pub struct TimeControl {
     pub dt_max: f64,
     /// The seed's rotation rule Δt·|θ̇| ≤ C_c (seed: 0.005).
     pub cc: f64,
+    /// A coupled run's summary averages over the whole turns from this complete turn after
+    /// release on (1: from the first; SPEC §7). Read by post-processing only.
+    #[serde(default = "first_turn")]
+    pub average_from_turn: usize,
+}
+
+/// The default of [`TimeControl::average_from_turn`].
+fn first_turn() -> usize {
+    1
 }
 
 impl Default for TimeControl {
@@ -116,6 +125,7 @@ impl Default for TimeControl {
             turns: None,
             dt_max: 0.01,
             cc: 0.005,
+            average_from_turn: first_turn(),
         }
     }
 }
@@ -133,6 +143,14 @@ pub struct RunConfig {
     pub body: Option<BodyConfig>,
     /// When the run ends and how its time step is bounded.
     pub time: TimeControl,
+}
+
+/// [`TimeControl::average_from_turn`]: a whole number of turns, and below the turn limit so that
+/// at least one whole turn follows it.
+fn check_average_from_turn(t: &TimeControl) -> Result<(), InputError> {
+    let k = t.average_from_turn;
+    let most = t.turns.map_or(10_000, |n| (n.ceil() as usize).saturating_sub(1).max(1));
+    check_whole(Param::AverageFromTurn, k, 1, most)
 }
 
 impl RunConfig {
@@ -168,6 +186,7 @@ impl RunConfig {
         if let Some(n) = t.turns {
             check_range(Param::Turns, n, 0.0, 1e4, true)?;
         }
+        check_average_from_turn(t)?;
         self.validate_case()?;
         check_phases(&self.case, t.t_end)?;
         if self.case.is_coupled() {

@@ -45,6 +45,7 @@ mod tests {
             turns: None,
             dt_max: 0.01,
             cc: 0.005,
+            average_from_turn: 1,
         }
     }
 
