@@ -498,8 +498,9 @@ pub fn intervals_of(
             "relative half-width of the mean duration of the lift cycles".into(),
         ));
         let mut iw = i.clone();
-        iw.value = st * alpha.sin().abs();
-        iw.half_width = i.half_width.map(|hw| hw * alpha.sin().abs());
+        let width = crate::summary::projected_width(config, *alpha);
+        iw.value = st * width;
+        iw.half_width = i.half_width.map(|hw| hw * width);
         put(
             &mut keys,
             "strouhal_chord",
@@ -625,7 +626,7 @@ fn alternation_line(intervals: &BTreeMap<String, IntervalInfo>) -> Option<String
     (!parts.is_empty()).then(|| parts.join(", "))
 }
 
-/// "mean_omega +0.77, mean_speed +0.05" for the keys whose batch means drift significantly.
+/// "mean_omega +0.7712, mean_speed +0.05, mean_cm -2.100e-5" (four significant digits) for the keys whose batch means drift significantly.
 fn drift_line(intervals: &BTreeMap<String, IntervalInfo>) -> Option<String> {
     let parts: Vec<String> = intervals
         .iter()
@@ -633,7 +634,11 @@ fn drift_line(intervals: &BTreeMap<String, IntervalInfo>) -> Option<String> {
             i.drift_significant == Some(true)
                 && i.note.as_deref() != Some("converted from the non-dimensional interval")
         })
-        .filter_map(|(k, i)| Some(format!("{k} {:+.3}", i.drift?)))
+        .filter_map(|(k, i)| {
+            let d = i.drift?;
+            let sign = if d > 0.0 { "+" } else { "" };
+            Some(format!("{k} {sign}{}", platefall_core::param::rounded(d)))
+        })
         .collect();
     (!parts.is_empty()).then(|| parts.join(", "))
 }
@@ -773,8 +778,15 @@ mod tests {
         assert!(all.mean_omega.unwrap() < 2.8, "{:?}", all.mean_omega);
         cfg.time.average_from_turn = 10;
         let s = summarize(&cfg, &rec, 0.0);
-        assert!((s.mean_omega.unwrap() - 3.0).abs() < 1e-3, "{:?}", s.mean_omega);
-        assert!((s.developed_from.unwrap() - 10.0 * PI).abs() < 0.01, "{s:?}");
+        assert!(
+            (s.mean_omega.unwrap() - 3.0).abs() < 1e-3,
+            "{:?}",
+            s.mean_omega
+        );
+        assert!(
+            (s.developed_from.unwrap() - 10.0 * PI).abs() < 0.01,
+            "{s:?}"
+        );
         assert_eq!(s.ci.intervals["mean_omega"].count, 19);
         assert_eq!(s.ci.intervals["mean_omega"].drift_significant, Some(false));
         assert!(s.developed_rule.contains("turn 10"), "{}", s.developed_rule);

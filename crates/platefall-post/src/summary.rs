@@ -40,7 +40,8 @@ pub struct Summary {
     pub max_cl: Option<f64>,
     pub min_cl: Option<f64>,
     pub max_cd: Option<f64>,
-    /// Dominant lift frequency × c/U, and × projected width c|sin α| / U (static case); null when steady.
+    /// Dominant lift frequency × c/U, and × the section's width across the stream / U (static
+    /// case; c|sin α| + t|cos α| for a rectangle, see [`projected_width`]); null when steady.
     pub strouhal_chord: Option<f64>,
     pub strouhal_width: Option<f64>,
     /// Static case: the reversed-flow length behind the plate at the end of the run, from its rear
@@ -250,8 +251,16 @@ fn set_coefficients(
         .and_then(|w| h.range(Quantity::Cd, w.t0, w.t1))
         .map(|r| r.1);
     if let (Case::Static { alpha, .. }, Some(f)) = (&config.case, freq) {
-        (sum.strouhal_chord, sum.strouhal_width) = (Some(f), Some(f * alpha.sin().abs()));
+        (sum.strouhal_chord, sum.strouhal_width) =
+            (Some(f), Some(f * projected_width(config, *alpha)));
     }
+}
+
+/// The width of a static section at angle of attack α across the stream (chords): the length
+/// the Strouhal number on the width is based on (c|sin α| + t|cos α| for a rectangle).
+pub fn projected_width(config: &RunConfig, alpha: f64) -> f64 {
+    let (s, c) = alpha.sin_cos();
+    config.grid.shape.outline().width_across([c, -s])
 }
 
 /// The keys measured on the final flow field.

@@ -56,6 +56,18 @@ impl Outline {
         &self.points
     }
 
+    /// The outline's extent across a motion along `dir` (body coordinates, any length): the
+    /// projected width a stream along `dir` meets, c·|sin α| + t·|cos α| for a rectangle at α.
+    pub fn width_across(&self, dir: [f64; 2]) -> f64 {
+        let len = dir[0].hypot(dir[1]);
+        let n = [-dir[1] / len, dir[0] / len];
+        let along = self.points.iter().map(|p| p[0] * n[0] + p[1] * n[1]);
+        let (lo, hi) = along.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
+            (lo.min(s), hi.max(s))
+        });
+        hi - lo
+    }
+
     /// Number of edges (= vertices).
     pub fn len(&self) -> usize {
         self.points.len()
@@ -401,6 +413,18 @@ mod tests {
         assert!(c[0].abs() < 1e-15 && c[1].abs() < 1e-15);
         // b h (b² + h²)/12 for b = 1, h = 0.5.
         assert!((r.polar_moment() - 0.5 * 1.25 / 12.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_width_across_a_stream_is_the_projected_extent() {
+        // A 1 × 0.5 rectangle: |sin α| + 0.5 |cos α| at any α; a circle: its diameter.
+        for a in [0.0, 0.4, -1.2, 0.5 * std::f64::consts::PI, 2.5] {
+            let (s, c) = f64::sin_cos(a);
+            let w = square().width_across([c, -s]);
+            assert!((w - (s.abs() + 0.5 * c.abs())).abs() < 1e-14, "{a}: {w}");
+            let circle = crate::shape::Shape::Ellipse { thickness: 1.0 }.outline();
+            assert!((circle.width_across([c, s]) - 1.0).abs() < 1e-3);
+        }
     }
 
     #[test]

@@ -149,7 +149,9 @@ pub struct RunConfig {
 /// at least one whole turn follows it.
 fn check_average_from_turn(t: &TimeControl) -> Result<(), InputError> {
     let k = t.average_from_turn;
-    let most = t.turns.map_or(10_000, |n| (n.ceil() as usize).saturating_sub(1).max(1));
+    let most = t
+        .turns
+        .map_or(10_000, |n| (n.ceil() as usize).saturating_sub(1).max(1));
     check_whole(Param::AverageFromTurn, k, 1, most)
 }
 
