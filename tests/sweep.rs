@@ -413,6 +413,18 @@ fn bad_plans_are_refused_with_exit_2_before_anything_runs() {
             "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\ntime = \"1 h\"\n",
             "[slurm] time",
         ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\ntime = \"1h\"\n",
+            "[slurm] time = \"1h\": accepted minutes, minutes:seconds",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\nsignal-lead = \"30s\"\n",
+            "signal-lead = the string \"30s\": accepted whole seconds from 1 to 65535",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\ntime = \"2\"\nsignal-lead = 120\n",
+            "signal-lead = 120: accepted whole seconds from 1 to 119, shorter than the time limit 2",
+        ),
     ];
     for (body, expect) in cases {
         let p = plan(&dir, body);
