@@ -1,4 +1,4 @@
-//! Fault injection for the fault-tolerance tests (`tests/faults.rs`, `tests/faults_root.rs`), read once from the
+//! Fault injection for the fault-tolerance tests (`tests/faults.rs`), read once from the
 //! environment variable `PLATEFALL_INJECT`, a comma-separated list of:
 //!
 //! - `disk-full-after=BYTES`: every output file together may take this many bytes; the write that
