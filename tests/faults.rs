@@ -5,9 +5,11 @@
 //! A full disk is injected here (`PLATEFALL_INJECT=disk-full-after=…`, see `record/inject.rs`);
 //! the same fault on a real full tmpfs and an unwritable (read-only) directory need root and are
 //! in `tests/faults_root.rs`, run by `.ci/run`.
+mod checkpoint_common;
 mod faults_common;
 mod record_common;
 
+use std::path::{Path, PathBuf};
 use std::time::Duration;
 
 use faults_common::*;
@@ -371,4 +373,108 @@ fn help_lists_the_exit_codes() {
             assert!(text.contains(code), "{cmd:?} lacks {code:?}");
         }
     }
+}
+
+/// The data rows of a CSV's text: whole lines (ending in a line break) that are not the header
+/// or a comment.
+fn whole_rows(text: &str) -> Vec<&str> {
+    let whole = text.rfind('\n').map_or("", |end| &text[..=end]);
+    whole
+        .lines()
+        .skip(1)
+        .filter(|l| !l.starts_with('#'))
+        .collect()
+}
+
+/// Runs `checkpointed_case` as `cut` in `dir` with every checkpoint write pausing 5 s half-way
+/// through its temporary file, and SIGKILLs it during the second one (t = 3), once the first
+/// (t = 1.5) is in place at `ckpt`. Returns the first checkpoint's bytes and the temporary file.
+fn kill_mid_checkpoint(dir: &Path, ckpt: &Path) -> (Vec<u8>, PathBuf) {
+    let env = [("PLATEFALL_INJECT", "checkpoint-delay=5")];
+    let mut child = start(&checkpointed_case(dir, "cut", ckpt), &env, dir);
+    let temp = dir.join(format!(".run.ckpt.partial-{}", child.id()));
+    let placed = wait_for(Duration::from_secs(60), || ckpt.exists());
+    assert!(placed, "no first checkpoint");
+    let first = std::fs::read(ckpt).unwrap();
+    // Magic and version, then at least half the payload (the second one is no smaller).
+    let half = 12 + (first.len() as u64 - 24) / 2;
+    let mid_write = || std::fs::metadata(&temp).is_ok_and(|m| m.len() >= half);
+    assert!(
+        wait_for(Duration::from_secs(60), mid_write),
+        "no second checkpoint being written"
+    );
+    signal(&child, "KILL");
+    let (code, _) = exit_code(&mut child, Duration::from_secs(30));
+    assert_eq!(code, -1, "killed by a signal");
+    (first, temp)
+}
+
+/// The first `rows` data rows of the CSV `text` and half of the next one.
+fn cut_after_row(text: &str, rows: usize) -> &str {
+    let end_of_row = |n: usize| text.match_indices('\n').nth(n).unwrap().0 + 1;
+    &text[..end_of_row(rows) + (end_of_row(rows + 1) - end_of_row(rows)) / 2]
+}
+
+#[test]
+fn sigkill_while_writing_a_checkpoint_leaves_the_previous_one_resumable() {
+    let dir = scratch("ckpt-kill");
+    run_full_checkpoint_case(&dir);
+    let ckpt = dir.join("run.ckpt");
+    let (first, temp) = kill_mid_checkpoint(&dir, &ckpt);
+
+    // The previous checkpoint is untouched; the temporary one is half a file, refused as such.
+    assert!(
+        std::fs::read(&ckpt).unwrap() == first,
+        "the checkpoint at its final name changed"
+    );
+    let left = std::fs::metadata(&temp).unwrap().len();
+    assert!(
+        left < first.len() as u64,
+        "{left} bytes left of a ≥ {} byte file",
+        first.len()
+    );
+    assert_one_line_refusal(&resume(&dir, &temp, &[]), "truncated");
+
+    // The run's CSV never reached its final name: resume refuses in one line and writes nothing.
+    let out = resume(&dir, &ckpt, &["--checkpoint", "again.ckpt"]);
+    assert_one_line_refusal(&out, "--csv: cannot resume it: cannot read the earlier CSV");
+    assert!(!dir.join("cut.csv").exists() && !dir.join("again.ckpt").exists());
+
+    // The killed run's own CSV (its temporary file: no trailer, and only the rows its 64 KiB
+    // buffer had written out, the last one often cut short) put at the final name: resume goes
+    // on from it when its whole rows reach the checkpoint's step, else refuses in one line
+    // saying how many whole rows it has and the step it needs.
+    let partial = partial_files(&dir)
+        .into_iter()
+        .find(|n| n.starts_with(".cut.csv.partial-"))
+        .expect("the killed run's temporary CSV");
+    std::fs::rename(dir.join(&partial), dir.join("cut.csv")).unwrap();
+    let cut = std::fs::read_to_string(dir.join("cut.csv")).unwrap();
+    assert!(
+        !cut.contains("# platefall:"),
+        "a killed run's CSV has no trailer"
+    );
+    let whole = whole_rows(&cut).len();
+    let out = resume(&dir, &ckpt, &["--checkpoint", "again.ckpt"]);
+    if out.status.code() != Some(0) {
+        let says = format!("holds {whole} whole rows, the checkpoint ");
+        assert_one_line_refusal(&out, &says);
+        let err = String::from_utf8_lossy(&out.stderr);
+        let k: usize = err.split(&says).nth(1).unwrap().trim().parse().unwrap();
+        assert!(whole < k, "{err}");
+        eprintln!("note: the killed run's CSV holds {whole} whole rows; the checkpoint, {k}");
+        // The checkpoint goes on exactly from a CSV that holds its rows (here the uninterrupted
+        // run's first k rows and half of the next one).
+        let full = std::fs::read_to_string(dir.join("full.csv")).unwrap();
+        std::fs::write(dir.join("cut.csv"), cut_after_row(&full, k)).unwrap();
+        let out = resume(&dir, &ckpt, &["--checkpoint", "again.ckpt"]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    assert_same_as_full(&dir, "cut");
+    let _ = std::fs::remove_dir_all(&dir);
 }

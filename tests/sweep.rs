@@ -413,6 +413,18 @@ fn bad_plans_are_refused_with_exit_2_before_anything_runs() {
             "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\ntime = \"1 h\"\n",
             "[slurm] time",
         ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\ntime = \"1h\"\n",
+            "[slurm] time = \"1h\": accepted minutes, minutes:seconds",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\nsignal-lead = \"30s\"\n",
+            "signal-lead = the string \"30s\": accepted whole seconds from 1 to 65535",
+        ),
+        (
+            "case = \"static\"\n[grid]\nalpha = [0.1]\n[slurm]\ntime = \"2\"\nsignal-lead = 120\n",
+            "signal-lead = 120: accepted whole seconds from 1 to 119, shorter than the time limit 2",
+        ),
     ];
     for (body, expect) in cases {
         let p = plan(&dir, body);
@@ -584,4 +596,47 @@ fn a_case_stopped_by_sigusr1_resumes_from_its_checkpoint() {
         resumed == std::fs::read(&full).unwrap(),
         "the resumed case's CSV differs"
     );
+}
+
+#[test]
+fn a_case_killed_outright_starts_again_instead_of_resuming_without_its_csv() {
+    let dir = scratch("killed-case");
+    let p = plan(
+        &dir,
+        "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 4\ncheckpoint-every = 0.5\n[grid]\nalpha = [0.3]\n",
+    );
+    let out = sweep(&[p.to_str().unwrap(), "--slurm"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let out_dir = dir.join("out");
+    let case = out_dir.join("cases/0000-alpha=0.3");
+    let mut child = platefall()
+        .args(["sweep", "run-case", out_dir.to_str().unwrap(), "0"])
+        .stdout(Stdio::null())
+        .spawn()
+        .unwrap();
+    wait_until(60, "no checkpoint", || case.join("run.ckpt").exists());
+    // SIGKILL the case itself (not run-case): its CSV never reaches its final name.
+    let status: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(case.join("status.json")).unwrap()).unwrap();
+    // SAFETY: signalling the case process our child started (it has not been reaped).
+    unsafe {
+        libc::kill(
+            status["pid"].as_i64().unwrap() as libc::pid_t,
+            libc::SIGKILL,
+        )
+    };
+    child.wait().unwrap();
+    assert!(case.join("run.ckpt").exists() && !case.join("run.csv").exists());
+    let again = sweep(&["run-case", out_dir.to_str().unwrap(), "0"]);
+    assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
+    let log = std::fs::read_to_string(case.join("log.txt")).unwrap();
+    let attempts: Vec<&str> = log.lines().filter(|l| l.starts_with("$ ")).collect();
+    assert_eq!(attempts.len(), 2, "{log}");
+    assert!(
+        !attempts[1].contains(" resume "),
+        "the second attempt starts again: {log}"
+    );
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(case.join("summary.json")).unwrap()).unwrap();
+    assert_eq!(status_of(&summary), "completed");
 }

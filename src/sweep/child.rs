@@ -77,14 +77,23 @@ pub(crate) fn is_done(layout: &Layout, id: &str) -> bool {
     )
 }
 
+/// Whether a case can go on from its checkpoint: this program reads it, and the case's CSV at
+/// its final name holds the rows up to it (a case killed outright, by SIGKILL or the OOM
+/// killer, left its checkpoint but no such CSV: it starts again).
+fn resumable(layout: &Layout, id: &str) -> bool {
+    read_checkpoint(&layout.checkpoint(id), &crate::cli::program_version()).is_ok_and(|c| {
+        platefall_record::check_csv_prefix(&layout.csv(id), c.sim.flow.steps).is_ok()
+    })
+}
+
 /// The full argument vector of a case: its options plus the outputs the sweep manages, with
-/// checkpoints at the default cadence; or, when the case left a checkpoint this program can
-/// read (a stopped attempt), `resume` of it with the same outputs (the recording goes on in a
+/// checkpoints at the default cadence; or, when the case can go on from its checkpoint (a
+/// stopped attempt), `resume` of it with the same outputs (the recording goes on in a
 /// continuation `run-from-STEP.rrd`; a VTK series is written by the first attempt only).
 pub(crate) fn full_args(layout: &Layout, case: &CaseSpec, outputs: Outputs) -> Vec<String> {
     let path = |p: std::path::PathBuf| p.to_string_lossy().into_owned();
     let ckpt = layout.checkpoint(&case.id);
-    let resumable = read_checkpoint(&ckpt, &crate::cli::program_version()).is_ok();
+    let resumable = resumable(layout, &case.id);
     let mut args = if resumable {
         vec!["resume".into(), path(ckpt), "--quiet".into()]
     } else {

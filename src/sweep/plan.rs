@@ -7,7 +7,8 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use super::options::{CaseCommands, OptionInfo, MANAGED};
-use super::values::{expand, one_line, Scale, Value};
+use super::slurm::{time_limit_seconds, DEFAULT_TIME};
+use super::values::{describe, expand, one_line, Scale, Value};
 use platefall_core::sim::CaseKind;
 
 /// A plan that cannot run: one line naming the value and what is accepted (exit 2).
@@ -69,6 +70,10 @@ pub(crate) struct SlurmPlan {
     pub(crate) partition: Option<String>,
     /// At most this many array tasks at once (`--array=...%N`).
     pub(crate) max_parallel: Option<u32>,
+    /// Seconds before the time limit at which Slurm sends SIGUSR1 (None: 120, or a quarter of
+    /// the time limit when that is shorter).
+    #[serde(default, deserialize_with = "signal_lead")]
+    pub(crate) signal_lead: Option<u32>,
     /// Extra sbatch options, one per line, e.g. "--account=abc" (written as `#SBATCH --account=abc`).
     #[serde(default)]
     pub(crate) sbatch: Vec<String>,
@@ -392,7 +397,24 @@ fn diagram(
     })
 }
 
-/// Slurm strings end up in a shell script: refuse line breaks.
+/// `signal-lead`: a whole number of seconds Slurm's `--signal` takes (1 to 65535); anything
+/// else is one line naming the value.
+fn signal_lead<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<u32>, D::Error> {
+    let v = toml::Value::deserialize(d)?;
+    match v.as_integer().map(u32::try_from) {
+        Some(Ok(n)) if (1..=MAX_SIGNAL_LEAD).contains(&n) => Ok(Some(n)),
+        _ => Err(serde::de::Error::custom(format!(
+            "[slurm] signal-lead = {}: accepted whole seconds from 1 to {MAX_SIGNAL_LEAD}, shorter than the time limit",
+            describe(&v)
+        ))),
+    }
+}
+
+/// The longest `--signal` lead Slurm takes, in seconds.
+pub(crate) const MAX_SIGNAL_LEAD: u32 = 65535;
+
+/// Slurm strings end up in a shell script: refuse line breaks. The time limit must be one Slurm
+/// reads, and the signal lead shorter than it.
 pub(crate) fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
     let fields = [
         ("time", &s.time),
@@ -413,6 +435,7 @@ pub(crate) fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
             "[slurm] cpus and max-parallel: accepted 1 or more".into(),
         ));
     }
+    check_signal_lead(s)?;
     for line in s.sbatch.iter().chain(&s.setup) {
         if line.contains(['\n', '\r']) {
             return Err(plan_err!(
@@ -421,4 +444,21 @@ pub(crate) fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
         }
     }
     Ok(())
+}
+
+/// The time limit is one Slurm reads, and an explicit signal lead is shorter than it.
+fn check_signal_lead(s: &SlurmPlan) -> Result<(), PlanError> {
+    let time = s.time.as_deref().unwrap_or(DEFAULT_TIME);
+    let Some(limit) = time_limit_seconds(time) else {
+        return Err(plan_err!(
+            "[slurm] time = {time:?}: accepted minutes, minutes:seconds, hours:minutes:seconds, days-hours, days-hours:minutes, days-hours:minutes:seconds, or UNLIMITED"
+        ));
+    };
+    match (s.signal_lead, limit) {
+        (Some(lead), Some(limit)) if u64::from(lead) >= limit => Err(plan_err!(
+            "[slurm] signal-lead = {lead}: accepted whole seconds from 1 to {}, shorter than the time limit {time} ({limit} s)",
+            (limit - 1).min(u64::from(MAX_SIGNAL_LEAD))
+        )),
+        _ => Ok(()),
+    }
 }

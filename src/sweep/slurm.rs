@@ -23,8 +23,11 @@ pub(crate) struct SlurmOverrides {
 }
 
 /// Resources when neither the plan nor a flag gives them.
-const DEFAULT_TIME: &str = "01:00:00";
+pub(crate) const DEFAULT_TIME: &str = "01:00:00";
 const DEFAULT_MEMORY: &str = "2G";
+/// The signal lead when the plan gives none and the time limit is long: two minutes to stop
+/// after the current step and write the checkpoint and the outputs.
+const DEFAULT_SIGNAL_LEAD: u64 = 120;
 /// Slurm's default MaxArraySize is 1001 (indices 0..=1000).
 const DEFAULT_MAX_ARRAY_INDEX: usize = 1000;
 
@@ -36,6 +39,7 @@ fn resources(plan: &SlurmPlan, flags: &SlurmOverrides) -> SlurmPlan {
         cpus: flags.cpus.or(plan.cpus),
         partition: flags.partition.clone().or_else(|| plan.partition.clone()),
         max_parallel: flags.max_parallel.or(plan.max_parallel),
+        signal_lead: plan.signal_lead,
         sbatch: plan.sbatch.clone(),
         setup: plan.setup.clone(),
     }
@@ -60,6 +64,47 @@ pub(crate) fn array_spec(indices: &[usize]) -> String {
         i += 1;
     }
     parts.join(",")
+}
+
+/// A time limit as sbatch's `--time` takes it, in seconds rounded up to whole minutes as Slurm
+/// does: `Some(None)` for no limit (UNLIMITED, INFINITE, 0), None when Slurm would not read it.
+pub(crate) fn time_limit_seconds(time: &str) -> Option<Option<u64>> {
+    if ["unlimited", "infinite", "-1"].contains(&time.to_ascii_lowercase().as_str()) {
+        return Some(None);
+    }
+    let number = |s: &str| {
+        (!s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()))
+            .then(|| s.parse::<u64>().ok())
+            .flatten()
+    };
+    let (days, clock) = match time.split_once('-') {
+        Some((d, rest)) => (Some(number(d)?), rest),
+        None => (None, time),
+    };
+    let parts: Vec<u64> = clock.split(':').map(number).collect::<Option<_>>()?;
+    let seconds = match (days, parts.as_slice()) {
+        (None, [m]) => m * 60,
+        (None, [m, s]) => m * 60 + s,
+        (None, [h, m, s]) => h * 3600 + m * 60 + s,
+        (Some(d), [h]) => d * 86400 + h * 3600,
+        (Some(d), [h, m]) => d * 86400 + h * 3600 + m * 60,
+        (Some(d), [h, m, s]) => d * 86400 + h * 3600 + m * 60 + s,
+        _ => return None,
+    };
+    Some((seconds > 0).then(|| seconds.div_ceil(60) * 60))
+}
+
+/// Seconds before the time limit at which Slurm warns the task with SIGUSR1: the plan's
+/// `signal-lead`, else two minutes, or a quarter of a shorter time limit's (at least 1 s). Slurm
+/// may send it up to a minute earlier than asked (it checks time limits every 30 s or so).
+pub(crate) fn signal_lead_of(res: &SlurmPlan) -> u64 {
+    if let Some(lead) = res.signal_lead {
+        return u64::from(lead);
+    }
+    let limit = time_limit_seconds(res.time.as_deref().unwrap_or(DEFAULT_TIME)).flatten();
+    limit.map_or(DEFAULT_SIGNAL_LEAD, |l| {
+        (l / 4).clamp(1, DEFAULT_SIGNAL_LEAD)
+    })
 }
 
 /// A word for the shell, single-quoted when it needs to be.
@@ -135,7 +180,7 @@ pub(crate) fn script(
     opt("--ntasks=1".into());
     // Before the time limit the case writes its checkpoint and the task requeues itself; the
     // next attempt resumes it and appends to the same log.
-    opt("--signal=B:USR1@120".into());
+    opt(format!("--signal=B:USR1@{}", signal_lead_of(res)));
     opt("--requeue".into());
     opt("--open-mode=append".into());
     if let Some(p) = &res.partition {
@@ -222,6 +267,39 @@ mod tests {
         assert_eq!(array_spec(&[0, 1, 2, 3]), "0-3");
         assert_eq!(array_spec(&[1, 3, 4, 5, 9]), "1,3-5,9");
         assert_eq!(array_spec(&[7]), "7");
+    }
+
+    #[test]
+    fn time_limits_read_as_slurm_reads_them() {
+        let t = time_limit_seconds;
+        assert_eq!(t("90"), Some(Some(5400)));
+        assert_eq!(t("1:30"), Some(Some(120)), "rounded up to whole minutes");
+        assert_eq!(t("01:00:00"), Some(Some(3600)));
+        assert_eq!(t("2-12"), Some(Some(216_000)));
+        assert_eq!(t("1-0:30"), Some(Some(88_200)));
+        assert_eq!(t("1-00:00:01"), Some(Some(86_460)));
+        for unlimited in ["UNLIMITED", "infinite", "0", "-1"] {
+            assert_eq!(t(unlimited), Some(None), "{unlimited}");
+        }
+        for bad in ["1h", "", "1:2:3:4", "a-1", "1-", "-5", "1:-2"] {
+            assert_eq!(t(bad), None, "{bad}");
+        }
+    }
+
+    #[test]
+    fn the_signal_lead_is_the_plans_or_fits_the_time_limit() {
+        let lead = |time: Option<&str>, signal_lead| {
+            signal_lead_of(&SlurmPlan {
+                time: time.map(String::from),
+                signal_lead,
+                ..Default::default()
+            })
+        };
+        assert_eq!(lead(None, None), 120, "the default hour");
+        assert_eq!(lead(Some("00:02:00"), None), 30);
+        assert_eq!(lead(Some("10"), None), 120);
+        assert_eq!(lead(Some("UNLIMITED"), None), 120);
+        assert_eq!(lead(Some("00:02:00"), Some(45)), 45);
     }
 
     #[test]

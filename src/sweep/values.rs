@@ -155,7 +155,7 @@ fn range(r: &RangeSpec, what: &str) -> Result<Vec<Value>, PlanError> {
 }
 
 /// What kind of TOML value `v` is, for errors.
-fn describe(v: &toml::Value) -> String {
+pub(crate) fn describe(v: &toml::Value) -> String {
     match v {
         toml::Value::String(s) => format!("the string {s:?}"),
         toml::Value::Integer(i) => format!("the number {i}"),

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
+use crate::checkpoint_common;
 pub use crate::record_common::{decode, rerun_cli};
 
 pub const PF: &str = env!("CARGO_BIN_EXE_platefall");
@@ -221,4 +222,80 @@ pub fn assert_final_outputs_complete(dir: &Path, status: &str) {
     if json.exists() {
         assert_eq!(summary_status(&json), status);
     }
+}
+
+/// The case of the checkpoint fault tests: static at N = 16 to t = 4 (about 700 steps, two
+/// seconds here), its CSV and summary `NAME.csv` and `NAME.json` in `dir`, no recording.
+pub fn checkpoint_case(dir: &Path, name: &str) -> Vec<String> {
+    let p = |ext: &str| {
+        dir.join(format!("{name}.{ext}"))
+            .to_string_lossy()
+            .into_owned()
+    };
+    let mut args = strings(&["static", "--resolution", "16", "--t-end", "4"]);
+    args.extend(["--csv".into(), p("csv"), "--summary".into(), p("json")]);
+    args.extend(strings(&["--no-save", "--progress", "off"]));
+    args
+}
+
+/// `checkpoint_case` with a checkpoint to `ckpt` every 1.5 convective times (t = 1.5, 3 and
+/// the end; the CSV's 64 KiB buffer is first written out between the first two).
+pub fn checkpointed_case(dir: &Path, name: &str, ckpt: &Path) -> Vec<String> {
+    let mut args = checkpoint_case(dir, name);
+    args.extend([
+        "--checkpoint-every".into(),
+        "1.5".into(),
+        "--checkpoint".into(),
+    ]);
+    args.push(ckpt.to_string_lossy().into_owned());
+    args
+}
+
+/// Runs `checkpoint_case` uninterrupted as `full` in `dir`.
+pub fn run_full_checkpoint_case(dir: &Path) {
+    let out = run(&checkpoint_case(dir, "full"), &[]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// `platefall resume CKPT` with `extra` arguments, run in `dir`; its output.
+pub fn resume(dir: &Path, ckpt: &Path, extra: &[&str]) -> Output {
+    Command::new(PF)
+        .arg("resume")
+        .arg(ckpt)
+        .args(["-q"].iter().chain(extra))
+        .current_dir(dir)
+        .output()
+        .expect("platefall runs")
+}
+
+/// `NAME.csv` in `dir` is the uninterrupted run's `full.csv` byte for byte, and `NAME.json`
+/// its summary but for the wall time.
+pub fn assert_same_as_full(dir: &Path, name: &str) {
+    let (a, b) = (
+        checkpoint_common::read(dir, "full.csv"),
+        checkpoint_common::read(dir, &format!("{name}.csv")),
+    );
+    assert!(
+        a == b,
+        "{name}.csv differs from full.csv ({} and {} bytes)",
+        b.len(),
+        a.len()
+    );
+    assert_eq!(
+        checkpoint_common::summary(dir, "full.json"),
+        checkpoint_common::summary(dir, &format!("{name}.json"))
+    );
+}
+
+/// `out` is a refusal: exit 2 and one line on stderr, which contains `needle`.
+pub fn assert_one_line_refusal(out: &Output, needle: &str) {
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(err.lines().count(), 1, "not one line: {err}");
+    assert!(err.contains(needle), "expected {needle:?}: {err}");
 }

@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 use bincode::Options as _;
 use platefall_core::sim::SimState;
 
+use super::inject;
 use super::output::{OutputError, PendingFile};
 
 /// The first eight bytes of every checkpoint.
@@ -133,17 +134,21 @@ fn codec() -> impl bincode::Options {
 }
 
 /// Writes `ckpt` to `path` atomically (temporary name, sync, rename); returns its size in bytes.
-/// The payload is encoded in memory first and written in one piece.
+/// The payload is encoded in memory first and written in two halves (between them the fault
+/// tests' injected `checkpoint-delay`, if any).
 pub fn write_checkpoint(path: &Path, ckpt: &Checkpoint) -> Result<u64, OutputError> {
     let payload = codec()
         .serialize(ckpt)
         .map_err(|e| OutputError::new("--checkpoint", path, format!("cannot encode: {e}")))?;
     let crc = crc32fast::hash(&payload);
+    let (head, tail) = payload.split_at(payload.len() / 2);
     let mut out = PendingFile::create("--checkpoint", path)?;
     let written = out
         .write_all(MAGIC)
         .and_then(|()| out.write_all(&FORMAT_VERSION.to_le_bytes()))
-        .and_then(|()| out.write_all(&payload))
+        .and_then(|()| out.write_all(head))
+        .and_then(|()| inject::checkpoint_delay(&mut out))
+        .and_then(|()| out.write_all(tail))
         .and_then(|()| out.write_all(&(payload.len() as u64).to_le_bytes()))
         .and_then(|()| out.write_all(&crc.to_le_bytes()));
     if let Err(e) = written {

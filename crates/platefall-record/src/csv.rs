@@ -115,23 +115,24 @@ pub fn check_prefix(path: &Path, rows: u64) -> Result<(), String> {
 }
 
 /// The first `rows` data rows of the CSV at `path` (after checking its header and that row k
-/// is step k); why not, in words.
+/// is step k, whole: every column and its line break); why not, in words. A CSV cut short (a
+/// run killed before it renamed its CSV into place leaves one, without a trailer and often with
+/// half a last line) serves as far as its whole rows go.
 fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, String> {
-    use std::io::BufRead as _;
     let file = std::fs::File::open(path)
         .map_err(|e| format!("cannot read the earlier CSV {}: {e}", path.display()))?;
-    let mut lines = std::io::BufReader::new(file).lines();
-    let header = lines.next().and_then(Result::ok);
-    if header.as_deref() != Some(CSV_HEADER) {
+    let mut reader = std::io::BufReader::new(file);
+    if whole_line(&mut reader).as_deref() != Some(CSV_HEADER) {
         return Err(format!("{} is not a platefall CSV", path.display()));
     }
+    let columns = CSV_HEADER.split(',').count();
     let mut out = Vec::with_capacity(rows as usize);
     for k in 1..=rows {
-        let line = match lines.next() {
-            Some(Ok(l)) if !l.starts_with('#') => l,
+        let line = match whole_line(&mut reader) {
+            Some(l) if !l.starts_with('#') && l.split(',').count() == columns => l,
             _ => {
                 return Err(format!(
-                    "the earlier CSV {} holds {} rows, the checkpoint {rows}",
+                    "the earlier CSV {} holds {} whole rows, the checkpoint {rows}",
                     path.display(),
                     k - 1
                 ))
@@ -143,6 +144,18 @@ fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, String> {
         out.push(line);
     }
     Ok(out)
+}
+
+/// The next line of `r` without its line break, if it has one (a last line cut short has none).
+fn whole_line(r: &mut impl std::io::BufRead) -> Option<String> {
+    let mut line = String::new();
+    match r.read_line(&mut line) {
+        Ok(_) if line.ends_with('\n') => {
+            line.pop();
+            Some(line)
+        }
+        _ => None,
+    }
 }
 
 /// The trailer line for a run that ended with `status` after `rows` rows, the last at time `t`.
@@ -159,4 +172,46 @@ pub fn trailer(status: &RunStatus, rows: u64, t: f64) -> String {
         "{CSV_TRAILER} status={} steps={rows} t={t}{reason}",
         status.name()
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A CSV of `rows` rows of steps 1.. as platefall writes them, the last one cut after
+    /// `cut` of its bytes (None: whole), and no trailer.
+    fn csv(rows: u64, cut: Option<usize>) -> String {
+        let mut s = format!("{CSV_HEADER}\n");
+        for k in 1..=rows {
+            let row = format!(
+                "{},{k},0.01,0.5,0.25,-0.125,0,0,0.4,0,0,0,1,0,0.4\n",
+                k as f64 / 100.0
+            );
+            match cut.filter(|_| k == rows) {
+                Some(n) => s.push_str(&row[..n]),
+                None => s.push_str(&row),
+            }
+        }
+        s
+    }
+
+    #[test]
+    fn a_csv_cut_short_serves_only_its_whole_rows() {
+        let dir = std::env::temp_dir().join(format!("pf-csv-prefix-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("cut.csv");
+        // Cut in the time, after the step, mid-row and just before the line break.
+        for cut in [3, 6, 40, 49] {
+            std::fs::write(&path, csv(5, Some(cut))).unwrap();
+            assert_eq!(prefix_rows(&path, 4).unwrap().len(), 4, "cut at {cut}");
+            let e = prefix_rows(&path, 5).unwrap_err();
+            assert!(
+                e.contains("holds 4 whole rows, the checkpoint 5"),
+                "cut at {cut}: {e}"
+            );
+        }
+        std::fs::write(&path, csv(5, None)).unwrap();
+        assert_eq!(prefix_rows(&path, 5).unwrap().len(), 5);
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
