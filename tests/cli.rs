@@ -118,23 +118,25 @@ fn bad_values_are_refused_naming_the_value_and_range() {
     let file = dir.join("not-a-dir");
     std::fs::write(&file, "x").unwrap();
     let mut cases = cases;
-    cases.extend([
-        (
-            format!("static --vtk {}", file.display()),
-            "exists and is not a directory",
-        ),
-        (
-            "static --vtk /proc/self".into(),
-            "--vtk /proc/self: directory",
-        ),
-        ("static --vtk /nonexistent-dir/v".into(), "/nonexistent-dir"),
-        (
-            format!("static --vtk {} --vtk-every 0", dir.display()),
-            "--vtk-every 0: must be",
-        ),
-        ("static --vtk-every 1".into(), "required arguments"),
-    ]
-    .map(|(a, n)| (a, n.to_string())));
+    cases.extend(
+        [
+            (
+                format!("static --vtk {}", file.display()),
+                "exists and is not a directory",
+            ),
+            (
+                "static --vtk /proc/self".into(),
+                "--vtk /proc/self: directory",
+            ),
+            ("static --vtk /nonexistent-dir/v".into(), "/nonexistent-dir"),
+            (
+                format!("static --vtk {} --vtk-every 0", dir.display()),
+                "--vtk-every 0: must be",
+            ),
+            ("static --vtk-every 1".into(), "required arguments"),
+        ]
+        .map(|(a, n)| (a, n.to_string())),
+    );
     // A port this test holds, so that it is busy while the cases run.
     let held = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
     cases.extend(port_cases(held.local_addr().unwrap().port(), free_port()));

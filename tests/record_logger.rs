@@ -537,9 +537,16 @@ fn http_get(port: u16, path: &str) -> (String, Vec<u8>) {
     write!(s, "GET {path} HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n").unwrap();
     let mut raw = Vec::new();
     s.read_to_end(&mut raw).unwrap();
-    let end = raw.windows(4).position(|w| w == b"\r\n\r\n").expect("headers") + 4;
+    let end = raw
+        .windows(4)
+        .position(|w| w == b"\r\n\r\n")
+        .expect("headers")
+        + 4;
     let head = String::from_utf8_lossy(&raw[..end]).into_owned();
-    (head.lines().next().unwrap_or("").to_string(), raw[end..].to_vec())
+    (
+        head.lines().next().unwrap_or("").to_string(),
+        raw[end..].to_vec(),
+    )
 }
 
 /// --web: the web viewer's page, script and wasm are served from the binary next to the gRPC
@@ -563,18 +570,28 @@ fn web_viewer_is_served_next_to_the_server() {
     let mut report = logger.finish(outcome(RunStatus::Completed)).unwrap();
     assert_eq!(
         report.web_url.as_deref(),
-        Some(format!("http://127.0.0.1:{web_port}/?url=rerun%2Bhttp://127.0.0.1:{port}/proxy").as_str())
+        Some(
+            format!("http://127.0.0.1:{web_port}/?url=rerun%2Bhttp://127.0.0.1:{port}/proxy")
+                .as_str()
+        )
     );
     let (status, page) = http_get(web_port, "/?url=x");
     assert!(status.contains(" 200"), "{status}");
     assert!(String::from_utf8_lossy(&page).contains("<title>Rerun Viewer</title>"));
     let (status, wasm) = http_get(web_port, "/re_viewer_bg.wasm");
     assert!(status.contains(" 200"), "{status}");
-    assert!(wasm.starts_with(b"\0asm") && wasm.len() > 1_000_000, "{} bytes", wasm.len());
+    assert!(
+        wasm.starts_with(b"\0asm") && wasm.len() > 1_000_000,
+        "{} bytes",
+        wasm.len()
+    );
     report.stop_serving();
     std::thread::sleep(Duration::from_millis(500));
     for p in [port, web_port] {
-        assert!(std::net::TcpStream::connect(("127.0.0.1", p)).is_err(), "{p} stopped");
+        assert!(
+            std::net::TcpStream::connect(("127.0.0.1", p)).is_err(),
+            "{p} stopped"
+        );
     }
 }
 

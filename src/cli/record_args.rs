@@ -655,7 +655,10 @@ mod tests {
             let mut a = args(&["--web", "--port", &free, "--web-port", &port]);
             a.no_save = true;
             let e = a.resolve(CaseKind::Free, &[]).unwrap_err().to_string();
-            assert!(e.starts_with(&format!("--web-port {port}: cannot listen")), "{e}");
+            assert!(
+                e.starts_with(&format!("--web-port {port}: cannot listen")),
+                "{e}"
+            );
         }
     }
 

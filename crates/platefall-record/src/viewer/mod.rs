@@ -37,8 +37,8 @@ use platefall_core::sim::{FieldSnapshot, StepSample};
 use rrd_file::RrdFile;
 use scene::Scene;
 use sinks::{open_sinks, ConnectStats};
-pub use web::WEB_AVAILABLE;
 use web::WebServer;
+pub use web::WEB_AVAILABLE;
 
 /// This build can record for Rerun.
 pub const AVAILABLE: bool = true;
