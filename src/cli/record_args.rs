@@ -57,10 +57,11 @@ pub struct RecordArgs {
     #[arg(long)]
     pub serve: bool,
 
-    /// Also serve the Rerun web viewer, reading the run from the --serve server (which --web
-    /// starts too): open the printed http://127.0.0.1:9090/?url=... page in a browser (none is
-    /// started for you); it keeps serving after the run, until Ctrl-C. From another machine,
-    /// tunnel both ports (--web-port and --port)
+    /// Watch the run in a browser: serve the Rerun web viewer (built into platefall) on
+    /// --web-port, reading from the --serve server, which --web starts too. Open the printed
+    /// http://127.0.0.1:9090/?url=... page (no browser is started for you); it keeps serving
+    /// after the run, until Ctrl-C. From another machine tunnel both ports, e.g.
+    /// `ssh -L 9090:127.0.0.1:9090 -L 9876:127.0.0.1:9876 HOST`
     #[arg(long)]
     pub web: bool,
 
