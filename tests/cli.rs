@@ -28,7 +28,7 @@ fn bad_values_are_refused_naming_the_value_and_range() {
     let s = summary.to_str().unwrap();
     // Arguments separated by spaces; a physical plate's three inputs are PLATE.
     const PLATE: &str = "free --chord-mm 10 --thickness-mm 1 --plate-density 2700";
-    let cases: Vec<(String, &str)> = [
+    let cases: Vec<(String, String)> = [
         ("static --re -5", "-5"),
         ("static --re 0", "(0, 100000]"),
         ("static --resolution 0", "4..=1024"),
@@ -114,28 +114,34 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         ),
     ]
     .into_iter()
-    .map(|(a, n)| (a.replace("PLATE", PLATE), n))
+    .map(|(a, n)| (a.replace("PLATE", PLATE), n.to_string()))
     .collect();
     // --vtk names a directory: not a file, not one that cannot be written (even by root: /proc).
     let file = dir.join("not-a-dir");
     std::fs::write(&file, "x").unwrap();
     let mut cases = cases;
-    cases.extend([
-        (
-            format!("static --vtk {}", file.display()),
-            "exists and is not a directory",
-        ),
-        (
-            "static --vtk /proc/self".into(),
-            "--vtk /proc/self: directory",
-        ),
-        ("static --vtk /nonexistent-dir/v".into(), "/nonexistent-dir"),
-        (
-            format!("static --vtk {} --vtk-every 0", dir.display()),
-            "--vtk-every 0: must be",
-        ),
-        ("static --vtk-every 1".into(), "required arguments"),
-    ]);
+    cases.extend(
+        [
+            (
+                format!("static --vtk {}", file.display()),
+                "exists and is not a directory",
+            ),
+            (
+                "static --vtk /proc/self".into(),
+                "--vtk /proc/self: directory",
+            ),
+            ("static --vtk /nonexistent-dir/v".into(), "/nonexistent-dir"),
+            (
+                format!("static --vtk {} --vtk-every 0", dir.display()),
+                "--vtk-every 0: must be",
+            ),
+            ("static --vtk-every 1".into(), "required arguments"),
+        ]
+        .map(|(a, n)| (a, n.to_string())),
+    );
+    // A port this test holds, so that it is busy while the cases run.
+    let held = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    cases.extend(port_cases(held.local_addr().unwrap().port(), free_port()));
     for (line, needle) in &cases {
         let args: Vec<&str> = line.split_whitespace().collect();
         let mut full: Vec<&str> = args.clone();
@@ -154,6 +160,57 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         assert!(!err.contains("panicked"), "{args:?} panicked: {err}");
         assert!(!summary.exists(), "{args:?} wrote a summary");
     }
+}
+
+/// A port no one listens on now.
+fn free_port() -> u16 {
+    let l = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    l.local_addr().unwrap().port()
+}
+
+/// Refused --serve and --web ports (`busy` is held by the caller, `free` is not): each needs a
+/// port of its own, free now, not 0; --web-port only with --web, --web only in a build with it.
+fn port_cases(busy: u16, free: u16) -> Vec<(String, String)> {
+    let mut cases = vec![(
+        format!("static --web-port {free}"),
+        format!("--web-port {free} only goes with --web"),
+    )];
+    if cfg!(feature = "web") {
+        cases.extend([
+            (
+                "static --web --web-port 9876".into(),
+                "--web-port 9876: the same port as --port".into(),
+            ),
+            (
+                format!("static --web --port {free} --web-port {busy}"),
+                format!("--web-port {busy}: cannot listen on 127.0.0.1:{busy}"),
+            ),
+            (
+                format!("static --web --port {free} --web-port 0"),
+                "--web-port 0: must be in 1..=65535".into(),
+            ),
+            (
+                "static --web --port 0".into(),
+                "--port 0: must be in 1..=65535".into(),
+            ),
+        ]);
+    } else {
+        cases.push((
+            "static --web".into(),
+            "--web: this platefall was built without the `web` feature".into(),
+        ));
+    }
+    if cfg!(feature = "viewer") {
+        cases.push((
+            format!("static --serve --port {busy}"),
+            format!("--port {busy}: cannot listen on 127.0.0.1:{busy}"),
+        ));
+        cases.push((
+            "static --serve --port 0".into(),
+            "--port 0: must be in 1..=65535".into(),
+        ));
+    }
+    cases
 }
 
 #[test]

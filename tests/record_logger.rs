@@ -459,6 +459,7 @@ fn serve_keeps_the_run_for_a_late_viewer() {
             bind: "127.0.0.1".parse().unwrap(),
             port,
             memory_limit: "10%".into(),
+            web_port: None,
         }),
         ..RecordOptions::default()
     };
@@ -524,6 +525,74 @@ fn serve_keeps_the_run_for_a_late_viewer() {
         "server stopped"
     );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// One HTTP/1.0 GET of `path` on 127.0.0.1:`port`: the status line and the body (bounded by a
+/// 30 s read timeout).
+#[cfg(feature = "web")]
+fn http_get(port: u16, path: &str) -> (String, Vec<u8>) {
+    use std::io::{Read as _, Write as _};
+    let mut s = std::net::TcpStream::connect(("127.0.0.1", port)).expect("web viewer listens");
+    s.set_read_timeout(Some(Duration::from_secs(30))).unwrap();
+    write!(s, "GET {path} HTTP/1.0\r\nHost: 127.0.0.1\r\n\r\n").unwrap();
+    let mut raw = Vec::new();
+    s.read_to_end(&mut raw).unwrap();
+    let end = raw
+        .windows(4)
+        .position(|w| w == b"\r\n\r\n")
+        .expect("headers")
+        + 4;
+    let head = String::from_utf8_lossy(&raw[..end]).into_owned();
+    (
+        head.lines().next().unwrap_or("").to_string(),
+        raw[end..].to_vec(),
+    )
+}
+
+/// --web: the web viewer's page, script and wasm are served from the binary next to the gRPC
+/// server, at the URL the report names, after the run and until the servers stop.
+#[test]
+#[cfg(feature = "web")]
+fn web_viewer_is_served_next_to_the_server() {
+    let (port, web_port) = (free_port(), free_port());
+    let g = grid(30, 24, 0.0625);
+    let opts = RecordOptions {
+        serve: Some(platefall_record::ServeOptions {
+            bind: "127.0.0.1".parse().unwrap(),
+            port,
+            memory_limit: "10%".into(),
+            web_port: Some(web_port),
+        }),
+        ..RecordOptions::default()
+    };
+    let mut logger = spawn_logger(opts, run_info(g.clone())).unwrap();
+    drive(&mut logger, &g, 20, 0.01);
+    let mut report = logger.finish(outcome(RunStatus::Completed)).unwrap();
+    assert_eq!(
+        report.web_url.as_deref(),
+        Some(
+            format!("http://127.0.0.1:{web_port}/?url=rerun%2Bhttp://127.0.0.1:{port}/proxy")
+                .as_str()
+        )
+    );
+    let (status, page) = http_get(web_port, "/?url=x");
+    assert!(status.contains(" 200"), "{status}");
+    assert!(String::from_utf8_lossy(&page).contains("<title>Rerun Viewer</title>"));
+    let (status, wasm) = http_get(web_port, "/re_viewer_bg.wasm");
+    assert!(status.contains(" 200"), "{status}");
+    assert!(
+        wasm.starts_with(b"\0asm") && wasm.len() > 1_000_000,
+        "{} bytes",
+        wasm.len()
+    );
+    report.stop_serving();
+    std::thread::sleep(Duration::from_millis(500));
+    for p in [port, web_port] {
+        assert!(
+            std::net::TcpStream::connect(("127.0.0.1", p)).is_err(),
+            "{p} stopped"
+        );
+    }
 }
 
 #[test]

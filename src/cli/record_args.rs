@@ -1,6 +1,6 @@
 //! Recording and output options of every case subcommand ([`RecordArgs`], flattened into each)
 //! and their resolution into the recording layer's [`RecordOptions`], checking everything that can
-//! be checked before a run: ranges, URLs, the --serve port, output paths.
+//! be checked before a run: ranges, URLs, the --serve and --web ports, output paths.
 use std::net::{IpAddr, SocketAddr, TcpListener};
 use std::path::{Path, PathBuf};
 
@@ -9,7 +9,7 @@ use platefall_post::{FieldWindow, StreamFrame};
 use platefall_record::files::{check_directory, check_outputs, OutputPath};
 use platefall_record::options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
-    DEFAULT_PORT, FIELD_RES_RANGE,
+    DEFAULT_PORT, DEFAULT_WEB_PORT, FIELD_RES_RANGE,
 };
 use platefall_record::view_options::{ViewOptions, DEFAULT_WAKE_RES};
 use platefall_record::viewer;
@@ -57,11 +57,24 @@ pub struct RecordArgs {
     #[arg(long)]
     pub serve: bool,
 
-    /// Address the --serve server binds to (0.0.0.0 to accept remote viewers)
+    /// Watch the run in a browser: serve the Rerun web viewer (built into platefall) on
+    /// --web-port, reading from the --serve server, which --web starts too. Open the printed
+    /// http://127.0.0.1:9090/?url=... page (no browser is started for you); it keeps serving
+    /// after the run, until Ctrl-C. From another machine tunnel both ports, e.g.
+    /// `ssh -L 9090:127.0.0.1:9090 -L 9876:127.0.0.1:9876 HOST`
+    #[arg(long)]
+    pub web: bool,
+
+    /// Port of the --web viewer's page (1..=65535, not --port) [default: 9090]
+    #[arg(long, value_name = "N")]
+    pub web_port: Option<u16>,
+
+    /// Address the --serve server and the --web viewer bind to (0.0.0.0 to accept remote
+    /// viewers)
     #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]
     pub bind: IpAddr,
 
-    /// Port of the --serve server
+    /// Port of the --serve server (1..=65535)
     #[arg(long, value_name = "N", default_value_t = DEFAULT_PORT)]
     pub port: u16,
 
@@ -163,12 +176,21 @@ pub enum OptionsError {
     MemoryLimit { value: String, reason: String },
     #[error("--connect {value:?}: not a Rerun proxy URL ({reason}); expected e.g. rerun+http://127.0.0.1:9876/proxy")]
     ConnectUrl { value: String, reason: String },
-    #[error("--port {port}: cannot listen on {addr} ({reason})")]
+    #[error("{flag} {port}: cannot listen on {addr} ({reason})")]
     Port {
+        flag: &'static str,
         port: u16,
         addr: String,
         reason: String,
     },
+    #[error("{flag} 0: must be in 1..=65535 (the URL a viewer opens names the port)")]
+    PortZero { flag: &'static str },
+    #[error("--web-port {0}: the same port as --port; accepted any other port in 1..=65535")]
+    WebPortIsPort(u16),
+    #[error("--web-port {0} only goes with --web")]
+    WebPortAlone(u16),
+    #[error("--web: this platefall was built without the `web` feature, so it cannot serve the web viewer (rebuild with default features, or use --serve and the `rerun` viewer)")]
+    NoWebFeature,
     #[error("--spawn: no `rerun` viewer executable on PATH (install it with `pip install rerun-sdk==0.36.3`), or use --serve and connect a viewer yourself")]
     NoViewer,
     #[error("{flag}: this platefall was built without the `viewer` feature, so it cannot record or stream for Rerun (rebuild with default features, or use --no-save)")]
@@ -189,7 +211,12 @@ impl RecordArgs {
 
     /// True if the run opens a Rerun recording or stream (a file, a server or a viewer).
     pub fn uses_rerun(&self) -> bool {
-        !self.no_save || self.serve || self.connect.is_some() || self.spawn
+        !self.no_save || self.serves() || self.connect.is_some() || self.spawn
+    }
+
+    /// True if the run hosts the gRPC server: --serve, or --web (which reads from it).
+    fn serves(&self) -> bool {
+        self.serve || self.web
     }
 
     /// Validates the options for a run of `case`; `others` are the run's other outputs (e.g.
@@ -205,6 +232,7 @@ impl RecordArgs {
         others: &[(&'static str, &Path)],
     ) -> Result<RecordOptions, OptionsError> {
         let fields = self.field_options()?;
+        self.check_web_feature()?;
         self.check_viewer_feature()?;
         let serve = self.serve_options()?;
         let connect = self.connect_url()?;
@@ -308,6 +336,14 @@ impl RecordArgs {
         }))
     }
 
+    /// --web needs the `web` feature.
+    fn check_web_feature(&self) -> Result<(), OptionsError> {
+        if self.web && !viewer::WEB_AVAILABLE {
+            return Err(OptionsError::NoWebFeature);
+        }
+        Ok(())
+    }
+
     /// Without the `viewer` feature only --no-save runs (CSV, summary) are possible.
     fn check_viewer_feature(&self) -> Result<(), OptionsError> {
         if viewer::AVAILABLE {
@@ -325,9 +361,10 @@ impl RecordArgs {
         }
     }
 
-    /// --serve: the memory limit parses and the port is free now.
+    /// --serve (or --web): the memory limit parses and the ports are free now.
     fn serve_options(&self) -> Result<Option<ServeOptions>, OptionsError> {
-        if !self.serve {
+        let web_port = self.web_port()?;
+        if !self.serves() {
             return Ok(None);
         }
         viewer::check_memory_limit(&self.server_memory_limit).map_err(|e| {
@@ -336,19 +373,26 @@ impl RecordArgs {
                 reason: e.0,
             }
         })?;
-        let addr = SocketAddr::new(self.bind, self.port);
-        if let Err(err) = TcpListener::bind(addr) {
-            return Err(OptionsError::Port {
-                port: self.port,
-                addr: addr.to_string(),
-                reason: err.to_string(),
-            });
+        check_port("--port", self.bind, self.port)?;
+        if let Some(port) = web_port {
+            check_port("--web-port", self.bind, port)?;
         }
         Ok(Some(ServeOptions {
             bind: self.bind,
             port: self.port,
             memory_limit: self.server_memory_limit.clone(),
+            web_port,
         }))
+    }
+
+    /// The --web viewer's port (None without --web): --web-port only with --web, and not --port.
+    fn web_port(&self) -> Result<Option<u16>, OptionsError> {
+        match (self.web, self.web_port) {
+            (false, None) => Ok(None),
+            (false, Some(port)) => Err(OptionsError::WebPortAlone(port)),
+            (true, Some(port)) if port == self.port => Err(OptionsError::WebPortIsPort(port)),
+            (true, port) => Ok(Some(port.unwrap_or(DEFAULT_WEB_PORT))),
+        }
     }
 
     fn connect_url(&self) -> Result<Option<String>, OptionsError> {
@@ -405,6 +449,23 @@ impl RecordArgs {
             });
         }
         check_outputs(&outputs).map_err(|p| path_error(p.flag, &p.path, p.reason.to_string()))
+    }
+}
+
+/// The port `flag` names on `bind`: not 0, and free now (a listener binds it and lets it go).
+fn check_port(flag: &'static str, bind: IpAddr, port: u16) -> Result<(), OptionsError> {
+    if port == 0 {
+        return Err(OptionsError::PortZero { flag });
+    }
+    let addr = SocketAddr::new(bind, port);
+    match TcpListener::bind(addr) {
+        Ok(_) => Ok(()),
+        Err(err) => Err(OptionsError::Port {
+            flag,
+            port,
+            addr: addr.to_string(),
+            reason: err.to_string(),
+        }),
     }
 }
 
@@ -590,6 +651,45 @@ mod tests {
         a.no_save = true;
         let e = a.resolve(CaseKind::Free, &[]).unwrap_err().to_string();
         assert!(e.starts_with(&format!("--port {port}")), "{e}");
+        if viewer::WEB_AVAILABLE {
+            let free = free_port();
+            let mut a = args(&["--web", "--port", &free, "--web-port", &port]);
+            a.no_save = true;
+            let e = a.resolve(CaseKind::Free, &[]).unwrap_err().to_string();
+            assert!(
+                e.starts_with(&format!("--web-port {port}: cannot listen")),
+                "{e}"
+            );
+        }
+    }
+
+    /// A port no one listens on now.
+    #[cfg(feature = "viewer")]
+    fn free_port() -> String {
+        let l = TcpListener::bind("127.0.0.1:0").unwrap();
+        l.local_addr().unwrap().port().to_string()
+    }
+
+    #[test]
+    #[cfg(feature = "web")]
+    fn web_serves_the_run_and_its_viewer_on_the_bind_address() {
+        let port = free_port();
+        let o = args(&["--no-save", "--web", "--port", &port])
+            .resolve(CaseKind::Static, &[])
+            .unwrap();
+        let serve = o.serve.expect("--web starts the server");
+        assert_eq!(serve.port.to_string(), port);
+        assert_eq!(serve.web_port, Some(DEFAULT_WEB_PORT));
+        assert!(serve.bind.is_loopback());
+        let web = free_port();
+        let o = args(&["--no-save", "--serve", "--web", "--web-port", &web])
+            .resolve(CaseKind::Static, &[])
+            .unwrap();
+        assert_eq!(o.serve.unwrap().web_port.unwrap().to_string(), web);
+        let o = args(&["--no-save", "--serve"])
+            .resolve(CaseKind::Static, &[])
+            .unwrap();
+        assert_eq!(o.serve.unwrap().web_port, None, "no viewer without --web");
     }
 
     #[test]

@@ -8,7 +8,7 @@ use super::json;
 use super::plan::PlanError;
 
 /// Options the sweep sets itself for every case; a plan may not set them.
-pub(crate) const MANAGED: [&str; 13] = [
+pub(crate) const MANAGED: [&str; 15] = [
     "summary",
     "csv",
     "save",
@@ -16,6 +16,8 @@ pub(crate) const MANAGED: [&str; 13] = [
     "progress",
     "quiet",
     "serve",
+    "web",
+    "web-port",
     "bind",
     "port",
     "server-memory-limit",

@@ -53,6 +53,10 @@
 //! - `--serve [--bind 127.0.0.1] [--port 9876] [--server-memory-limit 25%]`: a gRPC server
 //!   (`GrpcServerSink`); viewers run `rerun rerun+http://HOST:PORT/proxy`, also after the run
 //!   (history kept up to the memory limit), until Ctrl-C.
+//! - `--web [--web-port 9090]` (cargo feature `web`): the Rerun web viewer served over HTTP on
+//!   the same bind address, next to the `--serve` server it reads from
+//!   (`ServeOptions::web_port`); a browser opens `ServeOptions::web_url`. No browser is ever
+//!   started.
 //! - `--connect URL`: push to an already-running viewer. Rerun's `GrpcSink` blocks once its queue
 //!   fills while no viewer listens; here it sits behind a bounded, never-blocking queue on its own
 //!   thread (`sinks::DetachedGrpcSink`): if the viewer is missing, slow or goes away, messages for
@@ -164,6 +168,7 @@ pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use messages::ConnectReport;
 pub use options::{
     ProgressMode, RecordOptions, ServeOptions, DEFAULT_FIELD_EVERY, DEFAULT_FIELD_RES,
+    DEFAULT_WEB_PORT,
 };
 pub use view_options::{ViewOptions, DEFAULT_WAKE_RES};
 #[cfg(feature = "viewer")]

@@ -65,6 +65,8 @@ pub struct LoggerReport {
     pub vtk: Option<VtkReport>,
     /// URL of the --serve server.
     pub serve_url: Option<String>,
+    /// The page of the --web viewer.
+    pub web_url: Option<String>,
     pub connect: Option<ConnectReport>,
     /// Warnings for the end-of-run report (part of [`LoggerReport::lines`]; problems found when
     /// the sinks were opened were also printed then).
@@ -86,6 +88,7 @@ impl std::fmt::Debug for LoggerReport {
             .field("csv", &self.csv)
             .field("vtk", &self.vtk)
             .field("serve_url", &self.serve_url)
+            .field("web_url", &self.web_url)
             .field("connect", &self.connect)
             .field("notes", &self.notes)
             .field("errors", &self.errors)
@@ -133,6 +136,9 @@ impl LoggerReport {
         if let Some(url) = &self.serve_url {
             out.push(format!("served at {url}"));
         }
+        if let Some(url) = &self.web_url {
+            out.push(format!("web viewer at {url}"));
+        }
         if let Some(c) = self.connect.as_ref().filter(|c| c.ever_connected) {
             out.push(format!(
                 "streamed to {}: {} messages sent, {} dropped",
@@ -152,8 +158,12 @@ impl LoggerReport {
         };
         if !stop.load(Ordering::SeqCst) {
             let url = self.serve_url.as_deref().unwrap_or("?");
+            let web = match &self.web_url {
+                Some(page) => format!(", or in a browser at {page}"),
+                None => String::new(),
+            };
             eprintln!(
-                "platefall: run finished; still serving it at {url} (open it with `rerun {url}`). Press Ctrl-C to stop."
+                "platefall: run finished; still serving it at {url} (open it with `rerun {url}`{web}). Press Ctrl-C to stop."
             );
             while !stop.load(Ordering::SeqCst) {
                 std::thread::sleep(Duration::from_millis(100));
@@ -211,6 +221,7 @@ pub fn spawn_logger(opts: RecordOptions, info: RunInfo) -> anyhow::Result<Logger
         shared: shared.clone(),
         progress: Progress::new(opts.progress, info.t_end.unwrap_or(f64::NAN)),
         serve_url: opts.serve.as_ref().map(|s| s.url()),
+        web_url: opts.serve.as_ref().and_then(|s| s.web_url()),
         opts,
         csv,
         csv_link,
@@ -401,6 +412,7 @@ struct LoggerThread {
     vtk: Option<VtkSeries>,
     viewer: Option<Viewer>,
     serve_url: Option<String>,
+    web_url: Option<String>,
     steps: u64,
     fields: u64,
     /// What went wrong with an output (the report says so; a write error also stops the run).
@@ -558,6 +570,7 @@ impl LoggerThread {
             csv,
             vtk: self.vtk.as_ref().map(VtkSeries::report),
             serve_url: self.serve_url,
+            web_url: self.web_url,
             connect,
             notes,
             errors,

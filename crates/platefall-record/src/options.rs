@@ -15,6 +15,8 @@ pub const DEFAULT_FIELD_RES: usize = 256;
 pub const FIELD_RES_RANGE: std::ops::RangeInclusive<usize> = 16..=2048;
 /// Default gRPC port (Rerun's own default).
 pub const DEFAULT_PORT: u16 = 9876;
+/// Default port of the web viewer (Rerun's own default).
+pub const DEFAULT_WEB_PORT: u16 = 9090;
 
 /// How progress is shown on stderr.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -37,17 +39,34 @@ pub struct ServeOptions {
     pub port: u16,
     /// As accepted by Rerun: "25%", "2GB", "unlimited".
     pub memory_limit: String,
+    /// Also serve the Rerun web viewer over HTTP on this port of `bind`, connected to the server
+    /// (needs the cargo feature `web`).
+    pub web_port: Option<u16>,
 }
 
 impl ServeOptions {
     /// The URL a viewer opens: `rerun+http://HOST:PORT/proxy` (127.0.0.1 for an unspecified bind).
     pub fn url(&self) -> String {
+        format!("rerun+http://{}/proxy", self.reachable(self.port))
+    }
+
+    /// The page a browser opens for the web viewer, `http://HOST:WEB_PORT/?url=` and the
+    /// server's [`url`](Self::url) with its `+` escaped (as the Rerun SDK writes it); None
+    /// without a web viewer.
+    pub fn web_url(&self) -> Option<String> {
+        let web = self.reachable(self.web_port?);
+        let proxy = self.url().replace('+', "%2B");
+        Some(format!("http://{web}/?url={proxy}"))
+    }
+
+    /// `port` at the bind address, 127.0.0.1 for an unspecified bind.
+    fn reachable(&self, port: u16) -> SocketAddr {
         let host = if self.bind.is_unspecified() {
             IpAddr::from([127, 0, 0, 1])
         } else {
             self.bind
         };
-        format!("rerun+http://{}/proxy", SocketAddr::new(host, self.port))
+        SocketAddr::new(host, port)
     }
 }
 

@@ -12,6 +12,9 @@ use platefall_post::phase::DiagramData;
 /// This build cannot record for Rerun.
 pub const AVAILABLE: bool = false;
 
+/// This build cannot serve the web viewer.
+pub const WEB_AVAILABLE: bool = false;
+
 /// A --serve server (none can exist in this build).
 pub enum LiveServer {}
 

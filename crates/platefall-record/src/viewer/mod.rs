@@ -1,5 +1,5 @@
 //! The Rerun side of a recording (cargo feature `viewer`, on by default): the sinks (file,
-//! `--serve`, `--connect`, `--spawn`), the scene (entities, documented in the crate docs (`lib.rs`)) and the
+//! `--serve` and its `--web` viewer, `--connect`, `--spawn`), the scene (entities, documented in the crate docs (`lib.rs`)) and the
 //! default blueprint (sent by the scene when it starts). The logger thread drives a [`Viewer`]
 //! and knows nothing of Rerun. Also a sweep's phase diagram as a recording
 //! ([`write_phase_recording`]).
@@ -17,6 +17,7 @@ mod statics;
 mod text;
 mod view_properties;
 mod wake;
+mod web;
 
 use std::path::PathBuf;
 use std::str::FromStr as _;
@@ -36,6 +37,8 @@ use platefall_core::sim::{FieldSnapshot, StepSample};
 use rrd_file::RrdFile;
 use scene::Scene;
 use sinks::{open_sinks, ConnectStats};
+use web::WebServer;
+pub use web::WEB_AVAILABLE;
 
 /// This build can record for Rerun.
 pub const AVAILABLE: bool = true;
@@ -53,13 +56,18 @@ pub struct ViewerReport {
     pub notes: Vec<String>,
 }
 
-/// A --serve server kept up after the run so that late viewers still get the whole run.
-pub struct LiveServer(RecordingStream);
+/// A --serve server (and the --web viewer reading from it) kept up after the run so that late
+/// viewers still get the whole run.
+pub struct LiveServer {
+    rec: RecordingStream,
+    /// Serves the web viewer until dropped.
+    _web: Option<WebServer>,
+}
 
 impl LiveServer {
-    /// Flushes to connected viewers (at most 2 s) and shuts the server down.
+    /// Flushes to connected viewers (at most 2 s) and shuts the servers down.
     pub fn shut_down(self) {
-        let _ = self.0.flush_with_timeout(Duration::from_secs(2));
+        let _ = self.rec.flush_with_timeout(Duration::from_secs(2));
     }
 }
 
@@ -69,6 +77,7 @@ pub struct Viewer {
     scene: Option<Scene>,
     rrd: Option<Arc<RrdFile>>,
     serving: bool,
+    web: Option<WebServer>,
     connect: Option<(String, Arc<ConnectStats>)>,
     notes: Vec<String>,
 }
@@ -83,6 +92,9 @@ impl Viewer {
         }
         if let Some(url) = &set.serve_url {
             eprintln!("platefall: serving the run at {url} (open it with `rerun {url}`)");
+        }
+        if let Some(url) = opts.serve.as_ref().and_then(|s| s.web_url()) {
+            eprintln!("platefall: web viewer at {url} (open it in a browser)");
         }
         let mut builder = rerun::RecordingStreamBuilder::new(APPLICATION_ID);
         if let Some(id) = &opts.recording_id {
@@ -101,6 +113,7 @@ impl Viewer {
             scene: Some(scene),
             rrd: set.rrd,
             serving: set.serve_url.is_some(),
+            web: set.web,
             connect: set.connect,
             notes: set.notes,
         })
@@ -181,7 +194,10 @@ impl Viewer {
         if let Some(c) = &connect {
             notes.extend(connect_note(c, rrd.is_some()));
         }
-        let server = (self.serving && errors.is_empty()).then(|| LiveServer(self.rec));
+        let server = (self.serving && errors.is_empty()).then(|| LiveServer {
+            rec: self.rec,
+            _web: self.web,
+        });
         ViewerReport {
             rrd,
             connect,

@@ -1,4 +1,5 @@
-//! The Rerun sinks of one run: file, gRPC server (--serve), gRPC client (--connect / --spawn).
+//! The Rerun sinks of one run: file, gRPC server (--serve, with the --web viewer beside it),
+//! gRPC client (--connect / --spawn).
 //!
 //! All sinks hang off one `RecordingStream` through a `MultiSink`. The file is our own
 //! [`RrdSink`] (`rrd_file.rs`): written under a temporary name, its errors seen by the logger,
@@ -21,6 +22,7 @@ use rerun::log::LogMsg;
 use rerun::sink::{GrpcSink, GrpcSinkConnectionState, LogSink, SinkFlushError};
 
 use super::rrd_file::{RrdFile, RrdSink};
+use super::web::{host_web_viewer, WebServer};
 use crate::options::RecordOptions;
 
 /// Messages queued for a --connect viewer before further ones are dropped.
@@ -177,6 +179,8 @@ pub(crate) struct SinkSet {
     pub rrd: Option<Arc<RrdFile>>,
     /// URL viewers open for --serve.
     pub serve_url: Option<String>,
+    /// The web viewer next to the --serve server (--web).
+    pub web: Option<WebServer>,
     /// Where --connect / --spawn streams, and its counters.
     pub connect: Option<(String, Arc<ConnectStats>)>,
     /// Warnings to show at the end (e.g. the viewer could not be started).
@@ -189,6 +193,7 @@ pub(crate) fn open_sinks(opts: &RecordOptions) -> anyhow::Result<SinkSet> {
         sinks: Vec::new(),
         rrd: None,
         serve_url: None,
+        web: None,
         connect: None,
         notes: Vec::new(),
     };
@@ -212,6 +217,7 @@ pub(crate) fn open_sinks(opts: &RecordOptions) -> anyhow::Result<SinkSet> {
         .map_err(|e| anyhow::anyhow!("--bind {} --port {}: {e}", serve.bind, serve.port))?;
         set.serve_url = Some(serve.url());
         set.sinks.push(Box::new(sink));
+        set.web = host_web_viewer(serve)?;
     }
 
     let mut connect_url = opts.connect.clone();
