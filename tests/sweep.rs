@@ -550,15 +550,21 @@ fn a_killed_sweep_stops_its_cases_and_resumes() {
     assert!(rows(&out_dir).iter().all(|r| status_of(r) == "completed"));
 }
 
-#[test]
-fn a_case_stopped_by_sigusr1_resumes_from_its_checkpoint() {
-    let dir = scratch("usr1");
+/// `sweep --slurm` of a plan of one static case (N = 8, to t = 4, a checkpoint every 0.5) in
+/// `dir/out`, prepared and not run.
+fn prepare_one_checkpointed_case(dir: &Path) {
     let p = plan(
-        &dir,
+        dir,
         "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 4\ncheckpoint-every = 0.5\n[grid]\nalpha = [0.3]\n",
     );
     let out = sweep(&[p.to_str().unwrap(), "--slurm"]);
     assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+}
+
+#[test]
+fn a_case_stopped_by_sigusr1_resumes_from_its_checkpoint() {
+    let dir = scratch("usr1");
+    prepare_one_checkpointed_case(&dir);
     let script = std::fs::read_to_string(dir.join("out/sweep.sbatch")).unwrap();
     for line in ["--signal=B:USR1@120", "--requeue", "--open-mode=append"] {
         assert!(script.contains(&format!("#SBATCH {line}\n")), "{script}");
@@ -601,12 +607,7 @@ fn a_case_stopped_by_sigusr1_resumes_from_its_checkpoint() {
 #[test]
 fn a_case_killed_outright_starts_again_instead_of_resuming_without_its_csv() {
     let dir = scratch("killed-case");
-    let p = plan(
-        &dir,
-        "case = \"static\"\n[fixed]\nresolution = 8\nt-end = 4\ncheckpoint-every = 0.5\n[grid]\nalpha = [0.3]\n",
-    );
-    let out = sweep(&[p.to_str().unwrap(), "--slurm"]);
-    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    prepare_one_checkpointed_case(&dir);
     let out_dir = dir.join("out");
     let case = out_dir.join("cases/0000-alpha=0.3");
     let mut child = platefall()
