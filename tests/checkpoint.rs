@@ -1,6 +1,7 @@
 //! Checkpoints and `platefall resume`: a run stopped (by the test hook, by SIGTERM, by SIGUSR1) and
 //! resumed, any number of times, writes the CSV of the uninterrupted run byte for byte and the
-//! same summary (but for the wall time); see also `tests/checkpoint_refusals.rs`.
+//! same summary (but for the wall time); killed by SIGKILL, it resumes as well from the CSV it left
+//! under its temporary name. See also `tests/checkpoint_refusals.rs`.
 mod checkpoint_common;
 
 use std::time::{Duration, Instant};
@@ -64,17 +65,16 @@ fn a_light_plate_in_water_resumes_exactly() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// Starts the free fall with checkpoints, waits for its first periodic checkpoint (t = 1.5,
-/// after the release), sends `signal` and resumes it to its end.
-fn stop_by_signal(name: &str, signal: i32) {
-    let dir = scratch(name);
-    run_full(&dir, FREE);
+/// Starts the free fall in `dir` as `cut` with checkpoints every 1.5 c/U (after the release)
+/// after running it uninterrupted as `full`, and waits for its first checkpoint.
+fn start_until_checkpoint(dir: &std::path::Path) -> std::process::Child {
+    run_full(dir, FREE);
     let mut args: Vec<String> = FREE.iter().map(|s| s.to_string()).collect();
     args.extend(outputs("cut"));
     args.extend(["--checkpoint-every".into(), "1.5".into()]);
-    let mut child = std::process::Command::new(PF)
+    let child = std::process::Command::new(PF)
         .args(&args)
-        .current_dir(&dir)
+        .current_dir(dir)
         .stderr(std::process::Stdio::null())
         .stdout(std::process::Stdio::null())
         .spawn()
@@ -83,9 +83,21 @@ fn stop_by_signal(name: &str, signal: i32) {
     while !dir.join("cut.ckpt").exists() && start.elapsed() < Duration::from_secs(60) {
         std::thread::sleep(Duration::from_millis(20));
     }
+    child
+}
+
+/// Sends `signal` to `child` and waits for it.
+fn signal(child: &mut std::process::Child, signal: i32) -> std::process::ExitStatus {
     // SAFETY: signalling our own child process by its id.
     unsafe { libc::kill(child.id() as libc::pid_t, signal) };
-    let status = child.wait().unwrap();
+    child.wait().unwrap()
+}
+
+/// The free fall stopped by `sig` after its first periodic checkpoint, resumed to its end.
+fn stop_by_signal(name: &str, sig: i32) {
+    let dir = scratch(name);
+    let mut child = start_until_checkpoint(&dir);
+    let status = signal(&mut child, sig);
     assert_eq!(status.code(), Some(75), "{status:?}");
     let trailer = String::from_utf8(read(&dir, "cut.csv")).unwrap();
     assert!(
@@ -93,6 +105,23 @@ fn stop_by_signal(name: &str, signal: i32) {
         "the CSV says it stopped"
     );
     expect_code(&run(&dir, &["resume", "cut.ckpt", "-q"]), 0);
+    assert_same_outputs(&dir);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// SIGKILL leaves the CSV under its temporary name; it holds the rows up to the last
+/// checkpoint (the logger writes them out before each one), so `resume --csv-from` it goes on
+/// to the uninterrupted run's outputs.
+#[test]
+fn a_free_fall_killed_after_a_checkpoint_resumes_with_its_partial_csv() {
+    let dir = scratch("sigkill");
+    let mut child = start_until_checkpoint(&dir);
+    let partial = format!(".cut.csv.partial-{}", child.id());
+    let status = signal(&mut child, libc::SIGKILL);
+    assert_eq!(status.code(), None, "killed: {status:?}");
+    assert!(!dir.join("cut.csv").exists(), "no CSV at its final name");
+    let resume = ["resume", "cut.ckpt", "--csv-from", &partial, "-q"];
+    expect_code(&run(&dir, &resume), 0);
     assert_same_outputs(&dir);
     let _ = std::fs::remove_dir_all(&dir);
 }

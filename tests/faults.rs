@@ -440,41 +440,40 @@ fn sigkill_while_writing_a_checkpoint_leaves_the_previous_one_resumable() {
     assert_one_line_refusal(&out, "--csv: cannot resume it: cannot read the earlier CSV");
     assert!(!dir.join("cut.csv").exists() && !dir.join("again.ckpt").exists());
 
-    // The killed run's own CSV (its temporary file: no trailer, and only the rows its 64 KiB
-    // buffer had written out, the last one often cut short) put at the final name: resume goes
-    // on from it when its whole rows reach the checkpoint's step, else refuses in one line
-    // saying how many whole rows it has and the step it needs.
+    // The killed run's own CSV (its temporary file: no trailer, the last row often cut short)
+    // holds the rows up to the checkpoint being written, since the logger writes them out
+    // before each checkpoint: `resume --csv-from` it goes on. A CSV cut short of the
+    // checkpoint's step is refused in one line saying how many whole rows it has and the step
+    // it needs.
     let partial = partial_files(&dir)
         .into_iter()
         .find(|n| n.starts_with(".cut.csv.partial-"))
         .expect("the killed run's temporary CSV");
-    std::fs::rename(dir.join(&partial), dir.join("cut.csv")).unwrap();
-    let cut = std::fs::read_to_string(dir.join("cut.csv")).unwrap();
+    let cut = std::fs::read_to_string(dir.join(&partial)).unwrap();
     assert!(
         !cut.contains("# platefall:"),
         "a killed run's CSV has no trailer"
     );
+    std::fs::write(dir.join("short.csv"), cut_after_row(&cut, 10)).unwrap();
+    let again = ["--checkpoint", "again.ckpt", "--csv-from"];
+    let out = resume(&dir, &ckpt, &[&again[..], &["short.csv"]].concat());
+    let says = "holds 10 whole rows, the checkpoint ";
+    assert_one_line_refusal(&out, says);
+    let err = String::from_utf8_lossy(&out.stderr);
+    let k: usize = err.split(says).nth(1).unwrap().trim().parse().unwrap();
     let whole = whole_rows(&cut).len();
-    let out = resume(&dir, &ckpt, &["--checkpoint", "again.ckpt"]);
-    if out.status.code() != Some(0) {
-        let says = format!("holds {whole} whole rows, the checkpoint ");
-        assert_one_line_refusal(&out, &says);
-        let err = String::from_utf8_lossy(&out.stderr);
-        let k: usize = err.split(&says).nth(1).unwrap().trim().parse().unwrap();
-        assert!(whole < k, "{err}");
-        eprintln!("note: the killed run's CSV holds {whole} whole rows; the checkpoint, {k}");
-        // The checkpoint goes on exactly from a CSV that holds its rows (here the uninterrupted
-        // run's first k rows and half of the next one).
-        let full = std::fs::read_to_string(dir.join("full.csv")).unwrap();
-        std::fs::write(dir.join("cut.csv"), cut_after_row(&full, k)).unwrap();
-        let out = resume(&dir, &ckpt, &["--checkpoint", "again.ckpt"]);
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-    }
+    assert!(
+        whole >= k,
+        "the killed run's CSV holds {whole} whole rows, the checkpoint {k}"
+    );
+    eprintln!("note: the killed run's CSV holds {whole} whole rows; the checkpoint, {k}");
+    let out = resume(&dir, &ckpt, &[&again[..], &[partial.as_str()]].concat());
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert_same_as_full(&dir, "cut");
     let _ = std::fs::remove_dir_all(&dir);
 }

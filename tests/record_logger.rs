@@ -314,11 +314,7 @@ fn interrupted_and_abandoned_runs_still_give_finalised_files() {
 fn connect_to_nothing_never_stalls_the_run_or_the_file() {
     let dir = temp_dir("connect");
     let rrd = dir.join("connect.rrd");
-    let port = std::net::TcpListener::bind("127.0.0.1:0")
-        .unwrap()
-        .local_addr()
-        .unwrap()
-        .port();
+    let port = free_port();
     let g = grid(40, 30, 0.0625);
     let opts = RecordOptions {
         connect: Some(format!("rerun+http://127.0.0.1:{port}/proxy")),
@@ -380,11 +376,7 @@ fn csv_only_run_needs_no_rerun_sink() {
 fn connect_to_a_viewer_that_goes_away_mid_run() {
     let dir = temp_dir("connect-away");
     let rrd = dir.join("away.rrd");
-    let port = std::net::TcpListener::bind("127.0.0.1:0")
-        .unwrap()
-        .local_addr()
-        .unwrap()
-        .port();
+    let port = free_port();
     // A stand-in viewer: Rerun's own gRPC message proxy, the server a viewer runs.
     let viewer = rerun::RecordingStreamBuilder::new("stand_in_viewer")
         .serve_grpc_opts("127.0.0.1", port, rerun::ServerOptions::default())
@@ -439,6 +431,7 @@ fn connect_to_a_viewer_that_goes_away_mid_run() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A port of 127.0.0.1 that nothing listens on (free when asked).
 fn free_port() -> u16 {
     std::net::TcpListener::bind("127.0.0.1:0")
         .unwrap()

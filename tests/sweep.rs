@@ -464,6 +464,39 @@ fn an_output_directory_that_cannot_be_made_is_bad_input_as_for_a_run() {
 }
 
 #[test]
+fn slurm_flags_override_the_plan_and_are_named_when_refused() {
+    let dir = scratch("slurm-flags");
+    let p = plan(&dir, FOUR_STATIC);
+    let p = p.to_str().unwrap();
+    let refused: [(&[&str], &str); 5] = [
+        (&["--time", "1h"], "--time \"1h\": accepted minutes, minutes:seconds"),
+        (
+            &["--time", "5", "--signal-lead", "300"],
+            "--signal-lead 300: accepted whole seconds from 1 to 299, shorter than the time limit 5 (300 s)",
+        ),
+        (&["--signal-lead", "0"], "--signal-lead 0: accepted whole seconds from 1 to 3599"),
+        (&["--cpus", "0"], "--cpus 0: accepted 1 or more"),
+        (&["--mem", "2 G"], "--mem \"2 G\": accepted one word as sbatch takes it"),
+    ];
+    for (flags, expect) in refused {
+        let args: Vec<&str> = [p, "--slurm"].iter().chain(flags).copied().collect();
+        let out = sweep(&args);
+        let err = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{flags:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{flags:?}: not one line: {err}");
+        assert!(
+            err.contains(expect),
+            "{flags:?}: expected {expect:?} in {err}"
+        );
+    }
+    let out = sweep(&[p, "--slurm", "--time", "00:10:00", "--signal-lead", "45"]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let script = std::fs::read_to_string(dir.join("out").join("sweep.sbatch")).unwrap();
+    assert!(script.contains("#SBATCH --signal=B:USR1@45\n"), "{script}");
+    assert!(script.contains("#SBATCH --time=00:10:00\n"), "{script}");
+}
+
+#[test]
 fn collect_merges_a_partial_directory_and_lists_what_is_missing() {
     let dir = scratch("collect");
     let p = plan(&dir, FOUR_STATIC);
@@ -582,10 +615,14 @@ fn a_case_stopped_by_sigusr1_resumes_from_its_checkpoint() {
     assert_eq!(child.wait().unwrap().code(), Some(75));
     let again = sweep(&["run-case", out_dir.to_str().unwrap(), "0"]);
     assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
-    // The same CSV as the case run uninterrupted with the first attempt's options.
-    let log = std::fs::read_to_string(case.join("log.txt")).unwrap();
-    let first = log.lines().find(|l| l.starts_with("$ ")).unwrap();
-    let args: Vec<&str> = first
+    assert_csv_as_uninterrupted(&dir, &case);
+}
+
+/// The case's CSV is that of the case run uninterrupted (in `dir`) with its first attempt's
+/// options.
+fn assert_csv_as_uninterrupted(dir: &Path, case: &Path) {
+    let attempts = attempt_lines(case);
+    let args: Vec<&str> = attempts[0]
         .split(' ')
         .skip(2)
         .take_while(|a| !a.starts_with("--checkpoint="))
@@ -604,10 +641,9 @@ fn a_case_stopped_by_sigusr1_resumes_from_its_checkpoint() {
     );
 }
 
-#[test]
-fn a_case_killed_outright_starts_again_instead_of_resuming_without_its_csv() {
-    let dir = scratch("killed-case");
-    prepare_one_checkpointed_case(&dir);
+/// Runs the prepared case in `dir/out` and SIGKILLs the case process itself (not run-case)
+/// after its first checkpoint: its CSV never reaches its final name. Returns the case directory.
+fn kill_case_after_a_checkpoint(dir: &Path) -> PathBuf {
     let out_dir = dir.join("out");
     let case = out_dir.join("cases/0000-alpha=0.3");
     let mut child = platefall()
@@ -616,7 +652,6 @@ fn a_case_killed_outright_starts_again_instead_of_resuming_without_its_csv() {
         .spawn()
         .unwrap();
     wait_until(60, "no checkpoint", || case.join("run.ckpt").exists());
-    // SIGKILL the case itself (not run-case): its CSV never reaches its final name.
     let status: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(case.join("status.json")).unwrap()).unwrap();
     // SAFETY: signalling the case process our child started (it has not been reaped).
@@ -628,14 +663,67 @@ fn a_case_killed_outright_starts_again_instead_of_resuming_without_its_csv() {
     };
     child.wait().unwrap();
     assert!(case.join("run.ckpt").exists() && !case.join("run.csv").exists());
+    case
+}
+
+/// The `$ ` lines of a case's log: the command line of each attempt.
+fn attempt_lines(case: &Path) -> Vec<String> {
+    let log = std::fs::read_to_string(case.join("log.txt")).unwrap();
+    log.lines()
+        .filter(|l| l.starts_with("$ "))
+        .map(String::from)
+        .collect()
+}
+
+#[test]
+fn a_case_killed_outright_resumes_from_the_csv_it_left() {
+    let dir = scratch("killed-case");
+    prepare_one_checkpointed_case(&dir);
+    let case = kill_case_after_a_checkpoint(&dir);
+    let out_dir = dir.join("out");
     let again = sweep(&["run-case", out_dir.to_str().unwrap(), "0"]);
     assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
-    let log = std::fs::read_to_string(case.join("log.txt")).unwrap();
-    let attempts: Vec<&str> = log.lines().filter(|l| l.starts_with("$ ")).collect();
-    assert_eq!(attempts.len(), 2, "{log}");
+    let attempts = attempt_lines(&case);
+    assert_eq!(attempts.len(), 2, "{attempts:?}");
+    assert!(
+        attempts[1].contains(" resume ") && attempts[1].contains(" --csv-from="),
+        "the second attempt resumes with the killed one's CSV: {attempts:?}"
+    );
+    // The same CSV as the case run uninterrupted, and the killed attempt's file is gone.
+    assert_csv_as_uninterrupted(&dir, &case);
+    let left: Vec<_> = std::fs::read_dir(&case)
+        .unwrap()
+        .flatten()
+        .filter(|e| {
+            e.file_name()
+                .to_string_lossy()
+                .starts_with(".run.csv.partial-")
+        })
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+}
+
+#[test]
+fn a_case_killed_outright_without_its_csv_starts_again() {
+    let dir = scratch("killed-case-no-csv");
+    prepare_one_checkpointed_case(&dir);
+    let case = kill_case_after_a_checkpoint(&dir);
+    for e in std::fs::read_dir(&case).unwrap().flatten() {
+        if e.file_name()
+            .to_string_lossy()
+            .starts_with(".run.csv.partial-")
+        {
+            std::fs::remove_file(e.path()).unwrap();
+        }
+    }
+    let out_dir = dir.join("out");
+    let again = sweep(&["run-case", out_dir.to_str().unwrap(), "0"]);
+    assert_eq!(again.status.code(), Some(0), "{}", text(&again.stderr));
+    let attempts = attempt_lines(&case);
+    assert_eq!(attempts.len(), 2, "{attempts:?}");
     assert!(
         !attempts[1].contains(" resume "),
-        "the second attempt starts again: {log}"
+        "the second attempt starts again: {attempts:?}"
     );
     let summary: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(case.join("summary.json")).unwrap()).unwrap();

@@ -6,8 +6,7 @@ use std::time::Instant;
 
 use platefall_core::sim::{History, Simulation};
 use platefall_record::checkpoint::{write_checkpoint, Checkpoint, ResumeInfo};
-use platefall_record::output::OutputError;
-use platefall_record::Cadence;
+use platefall_record::{Cadence, Logger};
 
 /// The checkpoints of one run.
 pub struct Checkpointer {
@@ -61,17 +60,29 @@ impl Checkpointer {
     }
 
     /// After a step: writes a checkpoint if one is due at the run's time.
-    pub fn after_step(&mut self, sim: &Simulation, history: &History) -> Result<(), OutputError> {
+    pub fn after_step(
+        &mut self,
+        sim: &Simulation,
+        history: &History,
+        logger: &Logger,
+    ) -> anyhow::Result<()> {
         let t = sim.flow().t();
         if !self.cadence.as_mut().is_some_and(|c| c.due(t)) {
             return Ok(());
         }
-        self.write(sim, history)
+        self.write(sim, history, logger)
     }
 
-    /// Writes a checkpoint of the run as it is now.
-    pub fn write(&mut self, sim: &Simulation, history: &History) -> Result<(), OutputError> {
+    /// Writes a checkpoint of the run as it is now, once the `logger` has written the CSV's
+    /// rows up to it: a run killed after this leaves a CSV that can resume from it.
+    pub fn write(
+        &mut self,
+        sim: &Simulation,
+        history: &History,
+        logger: &Logger,
+    ) -> anyhow::Result<()> {
         let start = Instant::now();
+        logger.flush_csv()?;
         let ckpt = Checkpoint {
             program: self.program.clone(),
             resume: self.info.clone(),

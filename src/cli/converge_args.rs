@@ -9,9 +9,9 @@ use crate::exit::Exit;
 use crate::sweep::converge::{self, ConvergeRequest};
 
 const AFTER_HELP: &str = "\
-Example (the card's free fall at one plate thickness, three resolutions):
+Example (the card's free fall, its plate 1/64 chord thick at every N, averaged over turns 11-30):
   platefall converge --refine resolution=32,64,128 --output conv/card -- \\
-      free --thickness 0.03125 --turns 20
+      free --turns 30 --average-from-turn 10
 
 The levels run as a sweep in DIR (DIR/plan.toml, DIR/cases/<id>/summary.json, results.csv): a level \
 whose summary is complete is not run again, so the same command resumes a stopped study. The study \
@@ -49,7 +49,7 @@ pub struct ConvergeArgs {
     /// Progress display on stderr.
     #[arg(long, value_enum, value_name = "MODE", default_value_t = ProgressMode::Auto)]
     pub progress: ProgressMode,
-    /// The case and its options, as on its own command line (`free --thickness 0.03125 ...`).
+    /// The case and its options, as on its own command line (`free --turns 30 ...`).
     #[arg(
         value_name = "CASE [OPTIONS]",
         trailing_var_arg = true,

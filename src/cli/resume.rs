@@ -38,6 +38,10 @@ pub struct ResumeArgs {
     /// The CSV [default: the run's; it is rewritten with the earlier rows first]
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
+    /// Take the earlier rows from this CSV: the `.NAME.partial-PID` file of a run that was
+    /// killed outright (it holds the rows up to its last checkpoint) [default: the run's CSV]
+    #[arg(long, value_name = "FILE")]
+    pub csv_from: Option<PathBuf>,
     /// The continuation recording [default: the run's with -from-STEP before .rrd]
     #[arg(long, value_name = "FILE.rrd", conflicts_with = "no_save")]
     pub save: Option<PathBuf>,
@@ -78,6 +82,9 @@ pub enum ResumeRefusal {
     /// The earlier CSV does not hold the rows up to the checkpoint.
     #[error("--csv: cannot resume it: {0}")]
     Csv(String),
+    /// `--csv-from` for a run that writes no CSV.
+    #[error("--csv-from {}: the run writes no CSV; give --csv FILE too", .0.display())]
+    CsvFromWithoutCsv(PathBuf),
     /// The run would already be over under the end asked for.
     #[error("{end}: the checkpoint is at t = {t:.4}; the run would already be over (give a later --t-end or more --turns)")]
     AlreadyOver {
@@ -181,11 +188,13 @@ fn resumed_outputs(
         .chain([("--checkpoint", ckpt_path.as_path())])
         .collect();
     let mut opts = r.resolve(kind, &others)?;
-    opts.csv_prefix = match (&opts.csv, &info.csv) {
-        (Some(_), Some(earlier)) => {
+    let earlier = args.csv_from.as_ref().or(info.csv.as_ref());
+    opts.csv_prefix = match (&opts.csv, earlier, &args.csv_from) {
+        (Some(_), Some(earlier), _) => {
             platefall_record::check_csv_prefix(earlier, steps).map_err(ResumeRefusal::Csv)?;
             Some((earlier.clone(), steps))
         }
+        (None, _, Some(from)) => return Err(ResumeRefusal::CsvFromWithoutCsv(from.clone()).into()),
         _ => None,
     };
     opts.recording_id = info.recording_id.clone();

@@ -103,7 +103,7 @@ pub(super) fn execute(
         rec.status = RunStatus::OutputFailed(why);
     }
     interrupts.set_phase(Phase::Finalising);
-    let (saved, ckpt_failure) = last_checkpoint(&r.sim, &rec, r.checkpoints.as_mut());
+    let (saved, ckpt_failure) = last_checkpoint(&r.sim, &rec, r.checkpoints.as_mut(), &logger);
     let saved = saved
         .then(|| r.checkpoints.as_ref().map(|c| c.path().to_path_buf()))
         .flatten();
@@ -138,6 +138,7 @@ fn last_checkpoint(
     sim: &Simulation,
     rec: &RunRecord,
     checkpoints: Option<&mut Checkpointer>,
+    logger: &Logger,
 ) -> (bool, Option<String>) {
     let Some(c) = checkpoints else {
         return (false, None);
@@ -150,9 +151,9 @@ fn last_checkpoint(
     if !wanted {
         return (false, None);
     }
-    match c.write(sim, &rec.samples) {
+    match c.write(sim, &rec.samples, logger) {
         Ok(()) => (rec.status == RunStatus::Interrupted, None),
-        Err(e) => (false, Some(e.to_string())),
+        Err(e) => (false, Some(format!("{e:#}"))),
     }
 }
 
@@ -371,8 +372,8 @@ impl Observer for Forward<'_> {
     }
     fn after_step(&mut self, sim: &Simulation, history: &History) {
         if let Some(c) = self.checkpoints.as_deref_mut() {
-            if let Err(e) = c.after_step(sim, history) {
-                self.lose(e.to_string());
+            if let Err(e) = c.after_step(sim, history, self.logger) {
+                self.lose(format!("{e:#}"));
             }
         }
         if self.stop_after.is_some_and(|n| sim.flow().steps() >= n) {

@@ -71,6 +71,10 @@ pub struct SlurmFlags {
     /// At most this many array tasks at once.
     #[arg(long, value_name = "N", requires = "slurm")]
     pub max_parallel: Option<u32>,
+    /// Seconds before the time limit at which Slurm sends each case SIGUSR1, to checkpoint and
+    /// stop [default: 120, or a quarter of a shorter time limit].
+    #[arg(long, value_name = "S", requires = "slurm")]
+    pub signal_lead: Option<u32>,
 }
 
 /// The sweep's own subcommands.
@@ -144,6 +148,7 @@ impl SweepArgs {
                         mem: r.mem.clone(),
                         cpus: r.cpus,
                         max_parallel: r.max_parallel,
+                        signal_lead: r.signal_lead,
                     }
                 }),
             },

@@ -14,7 +14,7 @@ use super::layout::Layout;
 use super::plan::{CaseSpec, Outputs};
 use platefall_core::sim::StatusKind;
 use platefall_record::checkpoint::read_checkpoint;
-use platefall_record::output::{write_atomically, OutputError};
+use platefall_record::output::{partial_path_of, write_atomically, OutputError};
 
 /// This executable, for the cases' child processes and the Slurm script.
 pub(crate) fn this_exe() -> Result<PathBuf, Failure> {
@@ -77,40 +77,74 @@ pub(crate) fn is_done(layout: &Layout, id: &str) -> bool {
     )
 }
 
-/// Whether a case can go on from its checkpoint: this program reads it, and the case's CSV at
-/// its final name holds the rows up to it (a case killed outright, by SIGKILL or the OOM
-/// killer, left its checkpoint but no such CSV: it starts again).
-fn resumable(layout: &Layout, id: &str) -> bool {
-    read_checkpoint(&layout.checkpoint(id), &crate::cli::program_version()).is_ok_and(|c| {
-        platefall_record::check_csv_prefix(&layout.csv(id), c.sim.flow.steps).is_ok()
-    })
+/// How a case's attempt starts.
+#[derive(Clone, Debug, PartialEq)]
+enum Start {
+    /// From the beginning.
+    Fresh,
+    /// From its checkpoint after `steps` steps, with the earlier rows of the CSV from
+    /// `csv_from` (None: the case's own CSV).
+    Resume {
+        steps: u64,
+        csv_from: Option<PathBuf>,
+    },
+}
+
+/// How a case goes on. It resumes from its checkpoint when this program reads it and the case's
+/// CSV holds the rows up to it; or when, killed outright (SIGKILL, the OOM killer, a lost node),
+/// it left its CSV under the temporary name of its process (`last`'s pid), which holds the rows
+/// up to its last checkpoint. Otherwise it starts again.
+fn start_of(layout: &Layout, id: &str, last: Option<&CaseStatus>) -> Start {
+    let Ok(ckpt) = read_checkpoint(&layout.checkpoint(id), &crate::cli::program_version()) else {
+        return Start::Fresh;
+    };
+    let (csv, steps) = (layout.csv(id), ckpt.sim.flow.steps);
+    let holds_rows = |p: &Path| platefall_record::check_csv_prefix(p, steps).is_ok();
+    if holds_rows(&csv) {
+        return Start::Resume {
+            steps,
+            csv_from: None,
+        };
+    }
+    match last.map(|s| partial_path_of(&csv, s.pid)) {
+        Some(left) if holds_rows(&left) => Start::Resume {
+            steps,
+            csv_from: Some(left),
+        },
+        _ => Start::Fresh,
+    }
 }
 
 /// The full argument vector of a case: its options plus the outputs the sweep manages, with
-/// checkpoints at the default cadence; or, when the case can go on from its checkpoint (a
-/// stopped attempt), `resume` of it with the same outputs (the recording goes on in a
-/// continuation `run-from-STEP.rrd`; a VTK series is written by the first attempt only).
-pub(crate) fn full_args(layout: &Layout, case: &CaseSpec, outputs: Outputs) -> Vec<String> {
-    let path = |p: std::path::PathBuf| p.to_string_lossy().into_owned();
+/// checkpoints at the default cadence; or, resumed, `resume` of its checkpoint with the same
+/// outputs (the recording goes on in a continuation `run-from-STEP.rrd`; a VTK series is
+/// written by the first attempt only).
+fn full_args(layout: &Layout, case: &CaseSpec, outputs: Outputs, start: &Start) -> Vec<String> {
+    let path = |p: &Path| p.to_string_lossy().into_owned();
     let ckpt = layout.checkpoint(&case.id);
-    let resumable = resumable(layout, &case.id);
-    let mut args = if resumable {
-        vec!["resume".into(), path(ckpt), "--quiet".into()]
-    } else {
-        let mut a = case.args.clone();
-        a.push(format!("--checkpoint={}", path(ckpt)));
-        a.push("--progress=off".into());
-        a
+    let resumed = *start != Start::Fresh;
+    let mut args = match start {
+        Start::Resume { csv_from, .. } => {
+            let mut a = vec!["resume".into(), path(&ckpt), "--quiet".into()];
+            a.extend(csv_from.iter().map(|f| format!("--csv-from={}", path(f))));
+            a
+        }
+        Start::Fresh => {
+            let mut a = case.args.clone();
+            a.push(format!("--checkpoint={}", path(&ckpt)));
+            a.push("--progress=off".into());
+            a
+        }
     };
-    args.push(format!("--summary={}", path(layout.summary(&case.id))));
-    args.push(format!("--csv={}", path(layout.csv(&case.id))));
-    match (outputs.recording, resumable) {
-        (true, false) => args.push(format!("--save={}", path(layout.recording(&case.id)))),
+    args.push(format!("--summary={}", path(&layout.summary(&case.id))));
+    args.push(format!("--csv={}", path(&layout.csv(&case.id))));
+    match (outputs.recording, resumed) {
+        (true, false) => args.push(format!("--save={}", path(&layout.recording(&case.id)))),
         (true, true) => {}
         (false, _) => args.push("--no-save".into()),
     }
-    if outputs.vtk && !resumable {
-        args.push(format!("--vtk={}", path(layout.vtk(&case.id))));
+    if outputs.vtk && !resumed {
+        args.push(format!("--vtk={}", path(&layout.vtk(&case.id))));
     }
     args
 }
@@ -123,6 +157,9 @@ pub(crate) struct Running {
     started: Instant,
     /// Where the child's own lines start in the log.
     log_start: u64,
+    /// The CSV a killed attempt left, which this attempt resumes from, and the rows it is
+    /// taken for (removed once the case's own CSV holds them).
+    csv_from: Option<(PathBuf, u64)>,
 }
 
 /// Starts a case: removes a stale summary, appends an attempt header to its log, records
@@ -139,8 +176,10 @@ pub(crate) fn launch(
         Err(e) if e.kind() != std::io::ErrorKind::NotFound => return Err(e),
         _ => {}
     }
-    let attempt = read_status(layout, id).map_or(1, |s| s.attempt + 1);
-    let args = full_args(layout, case, outputs);
+    let last = read_status(layout, id);
+    let attempt = last.as_ref().map_or(1, |s| s.attempt + 1);
+    let start = start_of(layout, id, last.as_ref());
+    let args = full_args(layout, case, outputs, &start);
     let mut log = OpenOptions::new()
         .create(true)
         .append(true)
@@ -178,6 +217,10 @@ pub(crate) fn launch(
         status,
         started: Instant::now(),
         log_start,
+        csv_from: match start {
+            Start::Resume { steps, csv_from } => csv_from.map(|f| (f, steps)),
+            Start::Fresh => None,
+        },
     })
 }
 
@@ -251,6 +294,11 @@ pub(crate) fn finish(layout: &Layout, mut r: Running, exit: ExitStatus) -> CaseS
     };
     if let Err(e) = write_status(layout, &id, &r.status) {
         eprintln!("warning: {e}");
+    }
+    if let Some((left, steps)) = r.csv_from {
+        if platefall_record::check_csv_prefix(&layout.csv(&id), steps).is_ok() {
+            let _ = std::fs::remove_file(left);
+        }
     }
     r.status
 }

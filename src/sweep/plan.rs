@@ -188,7 +188,7 @@ pub(crate) fn parse(
         slurm: raw.slurm,
         text: text.to_string(),
     };
-    check_slurm(&plan.slurm)?;
+    check_slurm(&plan.slurm, &[])?;
     Ok(plan)
 }
 
@@ -413,9 +413,29 @@ fn signal_lead<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<u32>, D:
 /// The longest `--signal` lead Slurm takes, in seconds.
 pub(crate) const MAX_SIGNAL_LEAD: u32 = 65535;
 
+/// The `[slurm]` keys and the `platefall sweep --slurm` flags that override them.
+const SLURM_FLAGS: [(&str, &str); 6] = [
+    ("time", "--time"),
+    ("memory", "--mem"),
+    ("partition", "--partition"),
+    ("cpus", "--cpus"),
+    ("max-parallel", "--max-parallel"),
+    ("signal-lead", "--signal-lead"),
+];
+
+/// A `[slurm]` value as a refusal names it: the flag that gave it (`--time "1h"`) when its key
+/// is among `from_flags`, else the plan's key (`[slurm] time = "1h"`).
+fn shown(key: &str, value: impl std::fmt::Display, from_flags: &[&str]) -> String {
+    match SLURM_FLAGS.iter().find(|(k, _)| *k == key) {
+        Some((_, flag)) if from_flags.contains(&key) => format!("{flag} {value}"),
+        _ => format!("[slurm] {key} = {value}"),
+    }
+}
+
 /// Slurm strings end up in a shell script: refuse line breaks. The time limit must be one Slurm
-/// reads, and the signal lead shorter than it.
-pub(crate) fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
+/// reads, and the signal lead shorter than it. `from_flags`: the keys whose values came from
+/// the command line (the messages name those flags).
+pub(crate) fn check_slurm(s: &SlurmPlan, from_flags: &[&str]) -> Result<(), PlanError> {
     let fields = [
         ("time", &s.time),
         ("memory", &s.memory),
@@ -425,17 +445,21 @@ pub(crate) fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
         if let Some(v) = v {
             if v.is_empty() || v.contains(['\n', '\r', ' ']) {
                 return Err(plan_err!(
-                    "[slurm] {key} = {v:?}: accepted one word as sbatch takes it (e.g. time = \"01:00:00\", memory = \"2G\")"
+                    "{}: accepted one word as sbatch takes it (e.g. 01:00:00 for the time, 2G for the memory)",
+                    shown(key, format!("{v:?}"), from_flags)
                 ));
             }
         }
     }
-    if s.cpus == Some(0) || s.max_parallel == Some(0) {
-        return Err(PlanError(
-            "[slurm] cpus and max-parallel: accepted 1 or more".into(),
-        ));
+    for (key, v) in [("cpus", s.cpus), ("max-parallel", s.max_parallel)] {
+        if v == Some(0) {
+            return Err(plan_err!(
+                "{}: accepted 1 or more",
+                shown(key, 0, from_flags)
+            ));
+        }
     }
-    check_signal_lead(s)?;
+    check_signal_lead(s, from_flags)?;
     for line in s.sbatch.iter().chain(&s.setup) {
         if line.contains(['\n', '\r']) {
             return Err(plan_err!(
@@ -446,18 +470,24 @@ pub(crate) fn check_slurm(s: &SlurmPlan) -> Result<(), PlanError> {
     Ok(())
 }
 
-/// The time limit is one Slurm reads, and an explicit signal lead is shorter than it.
-fn check_signal_lead(s: &SlurmPlan) -> Result<(), PlanError> {
+/// The time limit is one Slurm reads, and an explicit signal lead is shorter than it (and one
+/// Slurm takes).
+fn check_signal_lead(s: &SlurmPlan, from_flags: &[&str]) -> Result<(), PlanError> {
     let time = s.time.as_deref().unwrap_or(DEFAULT_TIME);
     let Some(limit) = time_limit_seconds(time) else {
         return Err(plan_err!(
-            "[slurm] time = {time:?}: accepted minutes, minutes:seconds, hours:minutes:seconds, days-hours, days-hours:minutes, days-hours:minutes:seconds, or UNLIMITED"
+            "{}: accepted minutes, minutes:seconds, hours:minutes:seconds, days-hours, days-hours:minutes, days-hours:minutes:seconds, or UNLIMITED",
+            shown("time", format!("{time:?}"), from_flags)
         ));
     };
-    match (s.signal_lead, limit) {
-        (Some(lead), Some(limit)) if u64::from(lead) >= limit => Err(plan_err!(
-            "[slurm] signal-lead = {lead}: accepted whole seconds from 1 to {}, shorter than the time limit {time} ({limit} s)",
-            (limit - 1).min(u64::from(MAX_SIGNAL_LEAD))
+    let most = limit.map_or(u64::from(MAX_SIGNAL_LEAD), |l| {
+        (l.saturating_sub(1)).min(u64::from(MAX_SIGNAL_LEAD))
+    });
+    match s.signal_lead {
+        Some(lead) if lead == 0 || u64::from(lead) > most => Err(plan_err!(
+            "{}: accepted whole seconds from 1 to {most}, shorter than the time limit {time}{}",
+            shown("signal-lead", lead, from_flags),
+            limit.map_or(String::new(), |l| format!(" ({l} s)"))
         )),
         _ => Ok(()),
     }

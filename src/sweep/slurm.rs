@@ -20,6 +20,23 @@ pub(crate) struct SlurmOverrides {
     pub(crate) cpus: Option<u32>,
     /// At most this many array tasks at once.
     pub(crate) max_parallel: Option<u32>,
+    /// Seconds before the time limit at which Slurm warns each case.
+    pub(crate) signal_lead: Option<u32>,
+}
+
+impl SlurmOverrides {
+    /// The `[slurm]` keys these flags give.
+    fn keys(&self) -> Vec<&'static str> {
+        let given = [
+            ("time", self.time.is_some()),
+            ("memory", self.mem.is_some()),
+            ("partition", self.partition.is_some()),
+            ("cpus", self.cpus.is_some()),
+            ("max-parallel", self.max_parallel.is_some()),
+            ("signal-lead", self.signal_lead.is_some()),
+        ];
+        given.iter().filter(|(_, g)| *g).map(|(k, _)| *k).collect()
+    }
 }
 
 /// Resources when neither the plan nor a flag gives them.
@@ -39,7 +56,7 @@ fn resources(plan: &SlurmPlan, flags: &SlurmOverrides) -> SlurmPlan {
         cpus: flags.cpus.or(plan.cpus),
         partition: flags.partition.clone().or_else(|| plan.partition.clone()),
         max_parallel: flags.max_parallel.or(plan.max_parallel),
-        signal_lead: plan.signal_lead,
+        signal_lead: flags.signal_lead.or(plan.signal_lead),
         sbatch: plan.sbatch.clone(),
         setup: plan.setup.clone(),
     }
@@ -211,7 +228,7 @@ pub(crate) fn submit_script(
     flags: &SlurmOverrides,
 ) -> Result<Exit, Failure> {
     let res = resources(&plan.slurm, flags);
-    check_slurm(&res)?;
+    check_slurm(&res, &flags.keys())?;
     let exe = this_exe()?;
     std::fs::create_dir_all(layout.slurm_logs()).map_err(|e| {
         Failure::input(format!(

@@ -239,7 +239,7 @@ pub fn checkpoint_case(dir: &Path, name: &str) -> Vec<String> {
 }
 
 /// `checkpoint_case` with a checkpoint to `ckpt` every 1.5 convective times (t = 1.5, 3 and
-/// the end; the CSV's 64 KiB buffer is first written out between the first two).
+/// the end; the CSV's rows are written out before each).
 pub fn checkpointed_case(dir: &Path, name: &str, ckpt: &Path) -> Vec<String> {
     let mut args = checkpoint_case(dir, name);
     args.extend([

@@ -88,6 +88,13 @@ impl CsvWriter {
         Ok(())
     }
 
+    /// Writes the buffered rows to the temporary file.
+    pub fn flush(&mut self) -> Result<(), OutputError> {
+        self.out
+            .flush()
+            .map_err(|e| self.out.fail(format!("write failed: {e}")))
+    }
+
     /// An error about this file.
     pub fn fail(&self, reason: impl Into<String>) -> OutputError {
         self.out.fail(reason)

@@ -292,6 +292,23 @@ impl Logger {
         }
     }
 
+    /// Waits until the logger has handled every step sent so far and written the CSV's rows to
+    /// its file (not synced: they survive the process, not the machine). Call it before writing
+    /// a checkpoint: a run killed after the checkpoint then leaves a CSV (its `.NAME.partial-PID`
+    /// file) that holds the rows up to it, so the run can be resumed with its CSV. Fails like
+    /// [`step`](Self::step).
+    pub fn flush_csv(&self) -> anyhow::Result<()> {
+        let tx = self.tx.as_ref().context("the logger has finished")?;
+        let (done_tx, done_rx) = bounded(1);
+        let gone = || anyhow::anyhow!("the logger thread stopped unexpectedly");
+        tx.send(Message::Flush(done_tx)).map_err(|_| gone())?;
+        done_rx.recv().map_err(|_| gone())?;
+        match self.output_failure() {
+            Some(why) => anyhow::bail!("{why}"),
+            None => Ok(()),
+        }
+    }
+
     /// Offers a field snapshot. A snapshot for the recording only is offered without blocking:
     /// false (and counted as skipped) when the logger is behind, the channel full or
     /// `max_fields_in_flight` snapshots queued. One due for `--vtk` is never skipped: this waits
@@ -451,6 +468,10 @@ impl LoggerThread {
         match msg {
             Message::Step(s) => self.step(s),
             Message::Field(f, due) => self.field(&f, due),
+            Message::Flush(done) => {
+                self.flush_csv();
+                let _ = done.send(());
+            }
             Message::Finish(o) => return Some(o),
         }
         None
@@ -473,6 +494,16 @@ impl LoggerThread {
         }
         let result = self.viewer.as_mut().map(|v| v.step(s));
         self.note(result);
+    }
+
+    /// Writes the CSV's buffered rows to its (temporary) file.
+    fn flush_csv(&mut self) {
+        if let Some(w) = &mut self.csv {
+            if let Err(e) = w.flush() {
+                self.csv = None;
+                self.fail(e);
+            }
+        }
     }
 
     /// An output failed: keep the reason, drop nothing else, and have the solver stop.

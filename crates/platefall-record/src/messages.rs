@@ -74,6 +74,9 @@ pub enum Message {
     Step(StepSample),
     /// A field snapshot, at the field cadences, and what it is for; may be thinned.
     Field(Box<FieldSnapshot>, FieldUse),
+    /// Write out the CSV's buffered rows (the steps sent so far), then answer: sent before a
+    /// checkpoint, so that a run killed after it leaves a CSV holding the rows up to it.
+    Flush(crossbeam_channel::Sender<()>),
     Finish(RunOutcome),
 }
 

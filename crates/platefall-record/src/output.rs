@@ -37,13 +37,18 @@ impl OutputError {
     }
 }
 
-/// The temporary name of an output: `.NAME.partial-PID` beside its final name.
+/// The temporary name of an output of this process: `.NAME.partial-PID` beside its final name.
 pub fn partial_path(final_path: &Path) -> PathBuf {
+    partial_path_of(final_path, std::process::id())
+}
+
+/// The temporary name under which process `pid` writes (or, killed, left) an output.
+pub fn partial_path_of(final_path: &Path, pid: u32) -> PathBuf {
     let name = final_path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "output".into());
-    final_path.with_file_name(format!(".{name}.partial-{}", std::process::id()))
+    final_path.with_file_name(format!(".{name}.partial-{pid}"))
 }
 
 /// The temporary file of an output is no longer where it was written.
