@@ -70,7 +70,7 @@ pub struct RecordArgs {
     pub web_port: Option<u16>,
 
     /// Address the --serve server and the --web viewer bind to (0.0.0.0 to accept remote
-    /// viewers)
+    /// viewers: the printed URLs then name this machine by its host name)
     #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]
     pub bind: IpAddr,
 

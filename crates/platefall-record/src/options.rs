@@ -45,29 +45,58 @@ pub struct ServeOptions {
 }
 
 impl ServeOptions {
-    /// The URL a viewer opens: `rerun+http://HOST:PORT/proxy` (127.0.0.1 for an unspecified bind).
+    /// The URL a viewer opens: `rerun+http://HOST:PORT/proxy`, HOST the bind address, or for an
+    /// unspecified bind (0.0.0.0, ::) this machine's host name, which other machines on its
+    /// network can use (127.0.0.1 when it has none).
     pub fn url(&self) -> String {
-        format!("rerun+http://{}/proxy", self.reachable(self.port))
+        format!("rerun+http://{}/proxy", self.advertised(self.port))
     }
 
-    /// The page a browser opens for the web viewer, `http://HOST:WEB_PORT/?url=` and the
-    /// server's [`url`](Self::url) with its `+` escaped (as the Rerun SDK writes it); None
-    /// without a web viewer.
-    pub fn web_url(&self) -> Option<String> {
-        let web = self.reachable(self.web_port?);
-        let proxy = self.url().replace('+', "%2B");
-        Some(format!("http://{web}/?url={proxy}"))
-    }
-
-    /// `port` at the bind address, 127.0.0.1 for an unspecified bind.
-    fn reachable(&self, port: u16) -> SocketAddr {
+    /// The URL a viewer on this machine opens (127.0.0.1 for an unspecified bind).
+    pub fn local_url(&self) -> String {
         let host = if self.bind.is_unspecified() {
             IpAddr::from([127, 0, 0, 1])
         } else {
             self.bind
         };
-        SocketAddr::new(host, port)
+        format!("rerun+http://{}/proxy", SocketAddr::new(host, self.port))
     }
+
+    /// The page a browser opens for the web viewer, `http://HOST:WEB_PORT/?url=` and the
+    /// server's [`url`](Self::url) with its `+` escaped (as the Rerun SDK writes it); None
+    /// without a web viewer. The page and the server it names have the same HOST.
+    pub fn web_url(&self) -> Option<String> {
+        let web = self.advertised(self.web_port?);
+        let proxy = self.url().replace('+', "%2B");
+        Some(format!("http://{web}/?url={proxy}"))
+    }
+
+    /// `HOST:PORT` as [`url`](Self::url) names it.
+    fn advertised(&self, port: u16) -> String {
+        match (self.bind.is_unspecified(), host_name()) {
+            (true, Some(name)) => format!("{name}:{port}"),
+            (true, None) => SocketAddr::new(IpAddr::from([127, 0, 0, 1]), port).to_string(),
+            (false, _) => SocketAddr::new(self.bind, port).to_string(),
+        }
+    }
+}
+
+/// This machine's host name, if it has one that can stand in a URL.
+#[cfg(unix)]
+fn host_name() -> Option<String> {
+    let mut buf = [0u8; 256];
+    // SAFETY: gethostname writes at most `buf.len()` bytes into `buf`, which outlives the call.
+    let rc = unsafe { libc::gethostname(buf.as_mut_ptr().cast(), buf.len()) };
+    let end = buf.iter().position(|&b| b == 0)?;
+    let name = std::str::from_utf8(&buf[..end]).ok()?;
+    let usable = |c: char| c.is_ascii_alphanumeric() || c == '-' || c == '.';
+    (rc == 0 && !name.is_empty() && name.chars().all(usable)).then(|| name.to_string())
+}
+
+/// This machine's host name (none looked up off Unix).
+#[cfg(not(unix))]
+fn host_name() -> Option<String> {
+    None
 }
 
 /// Validated recording options; everything the logger needs.
@@ -150,5 +179,51 @@ impl RecordOptions {
     /// True if anything at all is recorded or streamed.
     pub fn has_rerun_sink(&self) -> bool {
         self.save.is_some() || self.serve.is_some() || self.connect.is_some() || self.spawn
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn serve(bind: &str, web_port: Option<u16>) -> ServeOptions {
+        ServeOptions {
+            bind: bind.parse().unwrap(),
+            port: 9876,
+            memory_limit: "25%".into(),
+            web_port,
+        }
+    }
+
+    #[test]
+    fn a_bound_address_is_named_in_every_url() {
+        let s = serve("10.1.2.3", Some(9090));
+        assert_eq!(s.url(), "rerun+http://10.1.2.3:9876/proxy");
+        assert_eq!(s.local_url(), s.url());
+        assert_eq!(
+            s.web_url().unwrap(),
+            "http://10.1.2.3:9090/?url=rerun%2Bhttp://10.1.2.3:9876/proxy"
+        );
+        assert_eq!(serve("::1", None).url(), "rerun+http://[::1]:9876/proxy");
+        assert_eq!(serve("::1", None).web_url(), None);
+    }
+
+    /// Bound to every interface, the URLs name the machine as others reach it (its host name),
+    /// the page and the server alike; a viewer started here uses loopback.
+    #[test]
+    fn an_unspecified_bind_names_this_host() {
+        let s = serve("0.0.0.0", Some(9090));
+        let host = host_name().unwrap_or_else(|| "127.0.0.1".into());
+        assert_ne!(host, "0.0.0.0");
+        assert_eq!(s.url(), format!("rerun+http://{host}:9876/proxy"));
+        assert_eq!(
+            s.web_url().unwrap(),
+            format!("http://{host}:9090/?url=rerun%2Bhttp://{host}:9876/proxy")
+        );
+        assert_eq!(s.local_url(), "rerun+http://127.0.0.1:9876/proxy");
+        assert_eq!(
+            serve("::", None).local_url(),
+            "rerun+http://127.0.0.1:9876/proxy"
+        );
     }
 }

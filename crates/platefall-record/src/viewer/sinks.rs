@@ -249,7 +249,7 @@ fn spawn_viewer(opts: &RecordOptions) -> anyhow::Result<Option<String>> {
             .local_addr()?
             .port();
         spawn.port = free;
-        spawn.extra_args = vec![serve.url()];
+        spawn.extra_args = vec![serve.local_url()];
         rerun::spawn(&spawn)?;
         Ok(None)
     } else {
