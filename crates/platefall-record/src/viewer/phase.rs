@@ -9,11 +9,11 @@ use rerun::components::{Radius, Text};
 use rerun::sink::LogSink;
 use rerun::{
     AnyValues, Color, EntityPath, EntityPathPart, LineStrips2D, Points2D, RecordingStream,
-    TextDocument,
 };
 
 use super::commit_file;
 use super::rrd_file::{RrdFile, RrdSink};
+use super::text::document;
 use crate::output::OutputError;
 use platefall_core::param::rounded as short_number;
 use platefall_post::phase::{
@@ -87,10 +87,7 @@ fn log_all(rec: &RecordingStream, data: &DiagramData) -> rerun::RecordingStreamR
     for p in &data.points {
         log_case(rec, p, &regime, &value, range, show, &data.value_key)?;
     }
-    rec.log_static(
-        path(&["phase", "legend"]),
-        &TextDocument::from_markdown(legend_markdown(data)),
-    )
+    rec.log_static(path(&["phase", "legend"]), &document(legend_markdown(data)))
 }
 
 /// A case's two points and its details.

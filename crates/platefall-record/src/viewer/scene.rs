@@ -7,9 +7,7 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use rerun::components::{Radius, TextLogLevel};
-use rerun::{
-    Color, LineStrips2D, RecordingStream, Scalars, TextDocument, TextLog, TimeColumn, Transform3D,
-};
+use rerun::{Color, LineStrips2D, RecordingStream, Scalars, TextLog, TimeColumn, Transform3D};
 
 use super::blueprint::{send_default_blueprint, ViewFit};
 use super::curves::SegmentedCurve;
@@ -18,7 +16,7 @@ use super::layout::*;
 use super::polar::{polar_axes, polar_curves};
 use super::section::SectionDrawing;
 use super::statics::{log_static, window_reach};
-use super::text::summary_markdown;
+use super::text::{document, summary_markdown};
 use super::wake::WakeScene;
 use crate::messages::{RunInfo, RunOutcome};
 use crate::options::RecordOptions;
@@ -372,7 +370,7 @@ impl Scene {
         self.status(step, t, level, &line)?;
         self.rec.log_static(
             paths::SUMMARY,
-            &TextDocument::from_markdown(summary_markdown(outcome, &line, stats_md)),
+            &document(summary_markdown(outcome, &line, stats_md)),
         )?;
         Ok(())
     }

@@ -3,13 +3,13 @@
 use rerun::components::{MagnificationFilter, Radius};
 use rerun::{
     Color, DepthImage, LineStrips2D, RecordingStream, RecordingStreamResult, SeriesLines,
-    TextDocument, Transform3D,
+    Transform3D,
 };
 
 use super::layout::{paths, FIELD_SCALES, SERIES};
 use super::polar::polar_axes;
 use super::section::SectionDrawing;
-use super::text::config_markdown;
+use super::text::{config_markdown, document};
 use crate::messages::RunInfo;
 use crate::options::RecordOptions;
 use platefall_post::{FieldWindow, ImageGrid};
@@ -39,13 +39,11 @@ pub(super) fn log_static(
     motion.log(rec, paths::POLAR_MOTION)?;
     rec.log_static(
         paths::CONFIG,
-        &TextDocument::from_markdown(config_markdown(info, opts, img, wake)),
+        &document(config_markdown(info, opts, img, wake)),
     )?;
     rec.log_static(
         paths::SUMMARY,
-        &TextDocument::from_markdown(
-            "# Summary\n\nThe run is in progress; the summary appears here when it ends.",
-        ),
+        &document("# Summary\n\nThe run is in progress; the summary appears here when it ends."),
     )
 }
 

@@ -2,6 +2,18 @@
 use crate::messages::{RunInfo, RunOutcome};
 use crate::options::RecordOptions;
 use platefall_post::ImageGrid;
+use rerun::TextDocument;
+
+/// A markdown document for the viewer, in [`viewer_text`].
+pub(super) fn document(markdown: impl AsRef<str>) -> TextDocument {
+    TextDocument::from_markdown(viewer_text(markdown.as_ref()))
+}
+
+/// Text as the viewer can draw it. Its font has no combining dot above, which would show θ̇ as
+/// θ: the rate is written dθ/dt there, as the plots name it.
+fn viewer_text(text: &str) -> String {
+    text.replace("θ\u{307}", "dθ/dt")
+}
 
 fn code_block(lang: &str, body: &str) -> String {
     // A fence longer than any run of backticks in the body.
@@ -49,7 +61,7 @@ pub(super) fn config_markdown(
     let w = img.window;
     format!(
         "# {title}\n\n\
-         - **program**: platefall {version}\n\
+         - **program**: {version}\n\
          - **case**: {case}\n\
          - **command line**:\n\n{cmd}\n\
          - **recording**: field snapshots every {fe} c/U; images {iw}×{ih} px over \
@@ -83,4 +95,20 @@ pub(super) fn summary_markdown(outcome: &RunOutcome, status: &str, stats_md: &st
         report = code_block("text", &outcome.report),
         json = code_block("json", &outcome.summary_json),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::viewer_text;
+
+    #[test]
+    fn the_rotation_rate_is_written_so_the_viewer_shows_its_dot() {
+        let report = "forced rotation to θ̇ = 2\nmean θ̇ 2.70  mean γ −0.37  θ = 0.1";
+        let shown = viewer_text(report);
+        assert_eq!(
+            shown,
+            "forced rotation to dθ/dt = 2\nmean dθ/dt 2.70  mean γ −0.37  θ = 0.1"
+        );
+        assert!(!shown.contains('\u{307}'));
+    }
 }
