@@ -314,6 +314,37 @@ fn a_physical_plate_prints_its_derivation_and_reports_in_physical_units() {
     assert!(v["t_end"].as_f64().unwrap() >= 0.5 - 1e-9);
 }
 
+/// A thin ellipse's tips (radius of curvature b²/a = t²/2 = c/128 at t/c = 1/8) are a quarter
+/// of a cell at N = 32: the run says so before it starts, and from N = 64 (half a cell) it does
+/// not. A rectangle's corners are corners: no note.
+#[test]
+fn unresolved_rounded_edges_are_noted_before_the_run() {
+    let note = "note: the section's edges have a radius of curvature";
+    let ellipse = [
+        "static",
+        "--shape",
+        "ellipse",
+        "--thickness",
+        "0.125",
+        "--t-end",
+        "0.05",
+    ];
+    let at = |n: &str, shape: &[&str]| {
+        let args: Vec<&str> = shape.iter().copied().chain(["--resolution", n]).collect();
+        let (code, err, _) = run_with_summary(&format!("edge-{n}"), &args);
+        assert_eq!(code, 0, "{err}");
+        err
+    };
+    let coarse = at("32", &ellipse);
+    assert!(
+        coarse.contains(&format!("{note} of 0.0078 c, 0.25 of a cell at N = 32"))
+            && coarse.contains("from N = 64 on here"),
+        "{coarse}"
+    );
+    assert!(!at("64", &ellipse).contains(note));
+    assert!(!at("16", &["static", "--t-end", "0.05"]).contains(note));
+}
+
 /// Runs with `--no-save --progress off --summary` in a scratch directory: exit code, stderr and
 /// the summary JSON.
 fn run_with_summary(name: &str, args: &[&str]) -> (i32, String, serde_json::Value) {

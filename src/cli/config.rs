@@ -23,11 +23,37 @@ pub fn run_config(cmd: &Command) -> Result<ValidatedConfig, ArgError> {
     Ok(config)
 }
 
-/// What to tell the user about the plate before a run (see `BodyArgs::notes`).
+/// What to tell the user about the plate before a run (see `BodyArgs::notes`) and about how
+/// the grid resolves its section ([`section_note`]).
 pub fn plate_notes(cmd: &Command, config: &ValidatedConfig) -> Vec<String> {
-    match cmd {
+    let mut notes = match cmd {
         Command::Pinned(a) => a.body.notes(config),
         Command::Free(a) => a.body.notes(config),
         _ => Vec::new(),
+    };
+    notes.extend(section_note(config));
+    notes
+}
+
+/// Rounded edges narrower than this many cells are not resolved: a thin ellipse's regime
+/// changed between N = 32 (tip radius ¼ cell) and N = 64 (½ cell), and N = 64 and 128 agreed
+/// (docs/validation.md, "Falling plates").
+const RESOLVED_EDGE_CELLS: f64 = 0.5;
+
+/// A note when the section's rounded edges span less than half a cell at the run's N: the
+/// flow's separation from them, which decides whether a falling section flutters or tumbles,
+/// may then change with N.
+fn section_note(config: &ValidatedConfig) -> Option<String> {
+    let radius = config.grid.shape.edge_radius()?;
+    let n = config.grid.resolution;
+    let cells = radius * n as f64;
+    if cells >= RESOLVED_EDGE_CELLS {
+        return None;
     }
+    let needed = (RESOLVED_EDGE_CELLS / radius).ceil();
+    Some(format!(
+        "note: the section's edges have a radius of curvature of {radius:.4} c, {cells:.2} of a \
+         cell at N = {n}: below half a cell (from N = {needed} on here) the flow's separation from \
+         them, and whether a falling section flutters or tumbles, can depend on N"
+    ))
 }

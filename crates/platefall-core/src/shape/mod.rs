@@ -158,6 +158,17 @@ impl Shape {
         }
     }
 
+    /// The smallest radius of curvature of the section's rounded edges (chords): r of a rounded
+    /// rectangle, b²/a = t²/2 at the tips of an ellipse, ½ for a circle; None for a section
+    /// whose edges are corners (rectangle, polygon) or, for a NACA section, not computed.
+    pub fn edge_radius(&self) -> Option<f64> {
+        match self {
+            Shape::Rounded { radius, .. } => Some(*radius),
+            Shape::Ellipse { thickness } => Some(0.5 * thickness * thickness),
+            Shape::Rect { .. } | Shape::Naca { .. } | Shape::Polygon { .. } => None,
+        }
+    }
+
     /// Whether the grid is fitted to the shape's faces (a rectangle: every face on a grid line,
     /// so no cell is cut).
     pub fn fits_grid(&self) -> bool {
@@ -301,6 +312,44 @@ fn rounded(t: f64, r: f64) -> Outline {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The radius of the circle through three points.
+    fn circumradius(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> f64 {
+        let d = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]);
+        let cross = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+        d(p, q) * d(q, r) * d(r, p) / (2.0 * cross.abs())
+    }
+
+    /// `edge_radius` is the outline's tightest curvature: the circle through three neighbouring
+    /// outline points where it bends most has that radius.
+    #[test]
+    fn edge_radius_is_the_tightest_curvature_of_the_outline() {
+        for shape in [
+            Shape::Ellipse { thickness: 0.125 },
+            Shape::Ellipse { thickness: 0.5 },
+            Shape::Ellipse { thickness: 1.0 },
+            Shape::Rounded {
+                thickness: 0.1,
+                radius: 0.02,
+            },
+            Shape::Rounded {
+                thickness: 0.1,
+                radius: 0.05,
+            },
+        ] {
+            let pts = shape.outline().points().to_vec();
+            let n = pts.len();
+            let tightest = (0..n)
+                .map(|i| circumradius(pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n]))
+                .fold(f64::INFINITY, f64::min);
+            let r = shape.edge_radius().unwrap();
+            assert!(
+                (tightest / r - 1.0).abs() < 1e-3,
+                "{shape:?}: {tightest} against {r}"
+            );
+        }
+        assert_eq!(Shape::rect(0.1).edge_radius(), None);
+    }
 
     #[test]
     fn curved_outlines_match_their_exact_area_and_moment() {
