@@ -120,6 +120,16 @@ fn a_free_fall_killed_after_a_checkpoint_resumes_with_its_partial_csv() {
     let status = signal(&mut child, libc::SIGKILL);
     assert_eq!(status.code(), None, "killed: {status:?}");
     assert!(!dir.join("cut.csv").exists(), "no CSV at its final name");
+    let plain = run(&dir, &["resume", "cut.ckpt", "-q"]);
+    expect_code(&plain, 2);
+    let refusal = String::from_utf8_lossy(&plain.stderr);
+    assert!(
+        refusal.trim_end().ends_with(&format!(
+            "add --csv-from {} (it holds them)",
+            dir.join(&partial).display()
+        )),
+        "the refusal names the partial CSV that holds the rows: {refusal}"
+    );
     let resume = ["resume", "cut.ckpt", "--csv-from", &partial, "-q"];
     expect_code(&run(&dir, &resume), 0);
     assert_same_outputs(&dir);

@@ -190,8 +190,17 @@ fn resumed_outputs(
     let mut opts = r.resolve(kind, &others)?;
     let earlier = args.csv_from.as_ref().or(info.csv.as_ref());
     opts.csv_prefix = match (&opts.csv, earlier, &args.csv_from) {
-        (Some(_), Some(earlier), _) => {
-            platefall_record::check_csv_prefix(earlier, steps).map_err(ResumeRefusal::Csv)?;
+        (Some(_), Some(earlier), from) => {
+            platefall_record::check_csv_prefix(earlier, steps).map_err(|why| {
+                let hint = from
+                    .is_none()
+                    .then(|| partial_with_rows(earlier, steps))
+                    .flatten();
+                ResumeRefusal::Csv(match hint {
+                    Some(p) => format!("{why}; add --csv-from {} (it holds them)", p.display()),
+                    None => why,
+                })
+            })?;
             Some((earlier.clone(), steps))
         }
         (None, _, Some(from)) => return Err(ResumeRefusal::CsvFromWithoutCsv(from.clone()).into()),
@@ -202,6 +211,28 @@ fn resumed_outputs(
     info.csv = abs(&opts.csv).context("the CSV's path")?;
     info.summary = abs(&summary).context("the summary's path")?;
     Ok(opts)
+}
+
+/// A `.NAME.partial-PID` file beside `csv` (left by a run of this CSV killed outright) that
+/// holds the first `rows` rows, to name in the refusal.
+fn partial_with_rows(csv: &Path, rows: u64) -> Option<PathBuf> {
+    let name = csv.file_name()?.to_string_lossy();
+    let prefix = format!(".{name}.partial-");
+    let dir = csv
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let mut found: Vec<PathBuf> = std::fs::read_dir(dir)
+        .ok()?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.file_name()
+                .is_some_and(|f| f.to_string_lossy().starts_with(&prefix))
+        })
+        .filter(|p| platefall_record::check_csv_prefix(p, rows).is_ok())
+        .collect();
+    found.sort();
+    found.pop()
 }
 
 /// The continuation recording beside `rrd`: `NAME-from-STEP.rrd`.
