@@ -6,6 +6,7 @@
 //!
 //! | run | batches |
 //! |---|---|
+//! | pinned or free, full turns in both senses (chaotic) | none: the series estimator below, over the regime window |
 //! | pinned or free, two or more whole turns | the whole turns of the developed window (it runs from one turn's completion to another's) |
 //! | pinned or free, oscillating without turns | the cycles of θ between up-crossings of its midpoint (the regime rule's) |
 //! | forced | the half-turns of the developed window |
@@ -143,6 +144,9 @@ fn cut(
         },
         Case::Forced { omega, .. } => even(PI / omega.abs(), "half-turns"),
         Case::Pinned { .. } | Case::Free { .. } => {
+            if motion.is_some_and(|(_, class)| class.turns_both_ways()) {
+                return Cut::Series(w);
+            }
             let inside = |t: &f64| *t >= w.t0 - 1e-9 && *t <= w.t1 + 1e-9;
             let turns: Vec<f64> = count_turns(&rec.samples, rec.t_release)
                 .completed
@@ -406,7 +410,7 @@ pub fn intervals_of(
                  batches / τ (τ of the batch means, Geyer's initial monotone sequence, ≥ 1)"
             )
         }
-        Cut::Series(_) => "no cycles: integrated autocorrelation time τ of the series in equal \
+        Cut::Series(_) => "no cycles to batch: integrated autocorrelation time τ of the series in equal \
                            time bins (Sokal's window, c = 5), n_eff = bins / τ, Student t"
             .to_string(),
     });
@@ -711,6 +715,43 @@ mod tests {
         let i = &s.ci.intervals["mean_omega"];
         assert_eq!(i.observations, "whole turns");
         assert_eq!(i.count, 10);
+    }
+
+    #[test]
+    fn a_plate_turning_both_ways_is_averaged_over_time_in_the_regime_window() {
+        // θ swings 1.5 turns each way (period 10) while drifting forward, so it completes net
+        // turns, but the turns of either sense are not cycles of the motion; the descent slows from 1 to 0.5 ± 0.1 (period 0.5) half-way through.
+        let (dt, t_end) = (1e-2, 200.0);
+        let samples = (0..=(t_end / dt) as usize)
+            .map(|k| {
+                let t = k as f64 * dt;
+                let descent = if t < 100.0 {
+                    1.0
+                } else {
+                    0.5 + 0.1 * (4.0 * PI * t).sin()
+                };
+                StepSample {
+                    step: k as u64,
+                    t,
+                    dt,
+                    theta: 3.0 * PI * (0.2 * PI * t).sin() + 0.3 * t,
+                    ydot: -descent,
+                    speed: descent,
+                    ..Default::default()
+                }
+            })
+            .collect();
+        let s = summarize(&free(), &record(samples), 0.0);
+        assert!(s.developed_rule.contains("not whole turns"), "{}", s.developed_rule);
+        assert_eq!((s.autorotation_time, s.lag_cd_behind_cl), (None, None));
+        assert_eq!((s.developed_from, s.developed_to), (Some(100.0), Some(t_end)));
+        let descent = s.fall.mean_descent_speed.unwrap();
+        assert!((descent - 0.5).abs() < 1e-3, "mean descent {descent}");
+        assert_eq!(s.ci.ci_batches, None, "{:?}", s.ci.ci_method);
+        let i = &s.ci.intervals["mean_descent_speed"];
+        assert_eq!(i.observations, "time bins", "{i:?}");
+        let hw = i.half_width.unwrap();
+        assert!(hw < 0.02 && (descent - 0.5).abs() <= hw, "{descent} ± {hw}");
     }
 
     #[test]

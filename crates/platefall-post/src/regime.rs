@@ -83,6 +83,14 @@ pub struct MotionClass {
     pub turns: (usize, usize),
 }
 
+impl MotionClass {
+    /// Whether the plate made full turns in both senses: its whole turns are then not cycles of the
+    /// motion, and a run's means are taken over time rather than over whole turns.
+    pub fn turns_both_ways(&self) -> bool {
+        self.turns.0 > 0 && self.turns.1 > 0
+    }
+}
+
 /// The window the regime is judged on: the second half of the time after release.
 pub fn regime_window(samples: &[StepSample], t_release: f64) -> Option<TimeWindow> {
     let t1 = samples.last()?.t;

@@ -108,8 +108,9 @@ pub struct PhysicalKeys {
 }
 
 /// The developed window: for coupled cases the whole turns after autorotation is established (the
-/// first complete turn after release, or the turn `--average-from-turn` names), or, for a plate that makes no two whole turns, the regime
-/// window trimmed to whole periods of its motion; for forced rotation the whole half-turns after
+/// first complete turn after release, or the turn `--average-from-turn` names), or, for a plate
+/// that makes no two whole turns, the regime window trimmed to whole periods of its motion, or,
+/// for a plate that turns both ways in the regime window, that window itself; for forced rotation the whole half-turns after
 /// spin-up plus one half-turn; for the static case the second half of the run, trimmed to whole lift
 /// periods.
 fn developed(
@@ -169,6 +170,14 @@ fn coupled_window(
 ) -> (Option<TimeWindow>, String, Option<f64>) {
     let turns = count_turns(&rec.samples, rec.t_release);
     let established = turns.completed.first().copied();
+    if let Some((w, class)) = motion.filter(|(_, class)| class.turns_both_ways()) {
+        let rule = format!(
+            "second half after release ({} turns counter-clockwise and {} clockwise: means over \
+             time, not whole turns)",
+            class.turns.0, class.turns.1
+        );
+        return (Some(*w), rule, None);
+    }
     let from = turns.completed.get(from_turn.max(1) - 1).copied();
     if let (Some(a), Some(&b)) = (from, turns.completed.last()) {
         if b > a {
@@ -269,7 +278,13 @@ fn set_final_field(sum: &mut Summary, rec: &RunRecord) {
 }
 
 /// The keys of a moving plate (forced, pinned, free) over the developed window `w`.
-fn set_motion(sum: &mut Summary, config: &RunConfig, rec: &RunRecord, w: Option<TimeWindow>) {
+fn set_motion(
+    sum: &mut Summary,
+    config: &RunConfig,
+    rec: &RunRecord,
+    w: Option<TimeWindow>,
+    both_ways: bool,
+) {
     let (h, s) = (&rec.samples, &rec.samples[..]);
     let mean = |q: Quantity| w.and_then(|w| h.mean(q, w.t0, w.t1));
     if config.case.is_coupled() {
@@ -281,7 +296,10 @@ fn set_motion(sum: &mut Summary, config: &RunConfig, rec: &RunRecord, w: Option<
     }
     sum.mean_omega = mean(Quantity::Omega);
     sum.revolutions = Some(count_turns(s, rec.t_release).revolutions);
-    sum.lag_cd_behind_cl = w.and_then(|w| lag_cd_behind_cl(s, w));
+    // Half-turns in both senses have no common lag.
+    sum.lag_cd_behind_cl = w
+        .filter(|_| !both_ways)
+        .and_then(|w| lag_cd_behind_cl(s, w));
     sum.peak_cl_rotation = match (sum.mean_omega, sum.min_cl, sum.max_cl) {
         (Some(om), Some(lo), Some(hi)) => Some(if om >= 0.0 { hi } else { -lo }),
         _ => None,
@@ -403,7 +421,8 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
     set_coefficients(&mut sum, config, h, w, freq);
     set_final_field(&mut sum, rec);
     if !matches!(config.case, Case::Static { .. }) {
-        set_motion(&mut sum, config, rec, w);
+        let both_ways = motion.as_ref().is_some_and(|(_, c)| c.turns_both_ways());
+        set_motion(&mut sum, config, rec, w, both_ways);
     }
     sum.fall = fall_keys(h, w, motion.as_ref());
     let units = Units::of(config);
