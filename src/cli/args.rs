@@ -106,9 +106,12 @@ impl CheckpointArgs {
     /// The cadence, checked: finite and > 0; [`DEFAULT_CHECKPOINT_EVERY`] when only the file
     /// is given.
     pub fn every(&self) -> Result<Option<f64>, ArgError> {
-        if self.checkpoint_every.is_none() && self.checkpoint.is_some() {
-            return Ok(Some(DEFAULT_CHECKPOINT_EVERY));
-        }
+        let given = self.given_every()?;
+        Ok(given.or(self.checkpoint.as_ref().map(|_| DEFAULT_CHECKPOINT_EVERY)))
+    }
+
+    /// `--checkpoint-every` as given, checked: finite and > 0.
+    pub fn given_every(&self) -> Result<Option<f64>, ArgError> {
         match self.checkpoint_every {
             Some(t) if !(t.is_finite() && t > 0.0) => Err(ArgError::Invalid {
                 flag: "--checkpoint-every",

@@ -686,7 +686,8 @@ mod tests {
             .resolve(CaseKind::Static, &[])
             .unwrap();
         assert_eq!(o.serve.unwrap().web_port.unwrap().to_string(), web);
-        let o = args(&["--no-save", "--serve"])
+        let port = free_port();
+        let o = args(&["--no-save", "--serve", "--port", &port])
             .resolve(CaseKind::Static, &[])
             .unwrap();
         assert_eq!(o.serve.unwrap().web_port, None, "no viewer without --web");

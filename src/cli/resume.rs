@@ -21,8 +21,12 @@ use platefall_record::checkpoint::{read_checkpoint, Checkpoint, ResumeInfo};
 use platefall_record::messages::RunInfo;
 use platefall_record::RecordOptions;
 
-/// `platefall resume`'s options.
+/// `platefall resume`'s options (the checkpoint options are a case run's, with resume's defaults).
 #[derive(Args, Debug, Clone)]
+#[command(
+    mut_arg("checkpoint_every", |a| a.help("Checkpoint cadence [default: the run's]")),
+    mut_arg("checkpoint", |a| a.help("The checkpoint file to write [default: the one resumed from]"))
+)]
 pub struct ResumeArgs {
     /// The checkpoint file (written by --checkpoint-every or at a stop)
     pub file: PathBuf,
@@ -54,15 +58,17 @@ pub struct ResumeArgs {
     /// No progress output
     #[arg(long, short = 'q')]
     pub quiet: bool,
-    /// Checkpoint cadence [default: the run's]
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
-    pub checkpoint_every: Option<f64>,
-    /// The checkpoint file to write [default: the one resumed from]
-    #[arg(long, value_name = "FILE")]
-    pub checkpoint: Option<PathBuf>,
-    /// Test hook: stop (as SIGTERM does) after this many steps in all
-    #[arg(long, value_name = "N", hide = true)]
-    pub stop_after_steps: Option<u64>,
+    // --checkpoint-every, --checkpoint: a case run's options, with resume's defaults (above).
+    #[command(flatten)]
+    pub checkpoint: CheckpointArgs,
+}
+
+impl ResumeArgs {
+    /// The checkpoint file to write: `--checkpoint`, else the one resumed from.
+    fn checkpoint_out(&self) -> PathBuf {
+        let given = self.checkpoint.checkpoint.as_ref();
+        given.unwrap_or(&self.file).clone()
+    }
 }
 
 /// Why a checkpoint cannot be resumed as asked (besides a bad file).
@@ -97,11 +103,7 @@ pub enum ResumeRefusal {
 
 /// Runs `platefall resume`.
 pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
-    let cadence = CheckpointArgs {
-        checkpoint_every: args.checkpoint_every,
-        ..CheckpointArgs::default()
-    };
-    cadence.every()?;
+    let given_every = args.checkpoint.given_every()?;
     let ckpt = read_checkpoint(&args.file, &version())?;
     let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
         file: args.file.clone(),
@@ -117,7 +119,7 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let mut info = ckpt.resume.clone();
     (info.t_end, info.turns) = (config.time.t_end, config.time.turns);
     let opts = resumed_outputs(record, &mut info, &ckpt, args, config.case.kind())?;
-    let every = args.checkpoint_every.or(info.every);
+    let every = given_every.or(info.every);
     info.every = every;
     let interrupts = Interrupts::install()?;
     let run_info = RunInfo::new(&config, command_line(), version());
@@ -131,7 +133,7 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
         };
         anyhow::bail!(ResumeRefusal::AlreadyOver { end, t });
     }
-    let path = args.checkpoint.clone().unwrap_or_else(|| args.file.clone());
+    let path = args.checkpoint_out();
     let started = Started {
         sim,
         history,
@@ -139,7 +141,7 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
         opts,
         threads: args.threads.unwrap_or(solver.threads),
         checkpoints: Some(Checkpointer::new(path, every, t, info, version())),
-        stop_after: args.stop_after_steps,
+        stop_after: args.checkpoint.stop_after_steps,
     };
     execute(started, run_info, &interrupts)
 }
@@ -181,7 +183,7 @@ fn resumed_outputs(
     r.no_save = args.no_save || r.save.is_none();
     r.quiet |= args.quiet;
     let summary = args.summary.clone().or(info.summary.clone());
-    let ckpt_path = args.checkpoint.clone().unwrap_or_else(|| args.file.clone());
+    let ckpt_path = args.checkpoint_out();
     let others: Vec<(&'static str, &Path)> = summary
         .iter()
         .map(|p| ("--summary", p.as_path()))

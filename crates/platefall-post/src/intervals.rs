@@ -410,9 +410,11 @@ pub fn intervals_of(
                  batches / τ (τ of the batch means, Geyer's initial monotone sequence, ≥ 1)"
             )
         }
-        Cut::Series(_) => "no cycles to batch: integrated autocorrelation time τ of the series in equal \
+        Cut::Series(_) => {
+            "no cycles to batch: integrated autocorrelation time τ of the series in equal \
                            time bins (Sokal's window, c = 5), n_eff = bins / τ, Student t"
-            .to_string(),
+                .to_string()
+        }
     });
     let time_mean = |q: Quantity, sign: f64, v: Option<f64>| v.map(|v| means.interval(q, sign, v));
     put(
@@ -742,9 +744,16 @@ mod tests {
             })
             .collect();
         let s = summarize(&free(), &record(samples), 0.0);
-        assert!(s.developed_rule.contains("not whole turns"), "{}", s.developed_rule);
+        assert!(
+            s.developed_rule.contains("not whole turns"),
+            "{}",
+            s.developed_rule
+        );
         assert_eq!((s.autorotation_time, s.lag_cd_behind_cl), (None, None));
-        assert_eq!((s.developed_from, s.developed_to), (Some(100.0), Some(t_end)));
+        assert_eq!(
+            (s.developed_from, s.developed_to),
+            (Some(100.0), Some(t_end))
+        );
         let descent = s.fall.mean_descent_speed.unwrap();
         assert!((descent - 0.5).abs() < 1e-3, "mean descent {descent}");
         assert_eq!(s.ci.ci_batches, None, "{:?}", s.ci.ci_method);
