@@ -467,7 +467,9 @@ fn sigkill_while_writing_a_checkpoint_leaves_the_previous_one_resumable() {
         "the killed run's CSV holds {whole} whole rows, the checkpoint {k}"
     );
     eprintln!("note: the killed run's CSV holds {whole} whole rows; the checkpoint, {k}");
-    let out = resume(&dir, &ckpt, &[&again[..], &[partial.as_str()]].concat());
+    // Resumed into the same checkpoint name, the run's first checkpoint removes the killed
+    // write's temporary file (its process is gone).
+    let out = resume(&dir, &ckpt, &["--csv-from", partial.as_str()]);
     assert_eq!(
         out.status.code(),
         Some(0),
@@ -475,5 +477,6 @@ fn sigkill_while_writing_a_checkpoint_leaves_the_previous_one_resumable() {
         String::from_utf8_lossy(&out.stderr)
     );
     assert_same_as_full(&dir, "cut");
+    assert!(!temp.exists(), "{} stayed", temp.display());
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -20,7 +20,7 @@ use bincode::Options as _;
 use platefall_core::sim::SimState;
 
 use super::inject;
-use super::output::{OutputError, PendingFile};
+use super::output::{remove_orphaned_partials, OutputError, PendingFile};
 
 /// The first eight bytes of every checkpoint.
 pub const MAGIC: &[u8; 8] = b"PFCKPT\r\n";
@@ -134,6 +134,7 @@ fn codec() -> impl bincode::Options {
 }
 
 /// Writes `ckpt` to `path` atomically (temporary name, sync, rename); returns its size in bytes.
+/// Once it is in place, the temporary files of killed earlier writes of `path` are removed.
 /// The payload is encoded in memory first and written in two halves (between them the fault
 /// tests' injected `checkpoint-delay`, if any).
 pub fn write_checkpoint(path: &Path, ckpt: &Checkpoint) -> Result<u64, OutputError> {
@@ -154,7 +155,9 @@ pub fn write_checkpoint(path: &Path, ckpt: &Checkpoint) -> Result<u64, OutputErr
     if let Err(e) = written {
         return Err(out.fail(format!("write failed: {e}")));
     }
-    out.commit().map(|(_, n)| n)
+    let size = out.commit().map(|(_, n)| n)?;
+    remove_orphaned_partials(path);
+    Ok(size)
 }
 
 /// Reads and checks a checkpoint written by `program` (see the module docs for the order of the

@@ -8,7 +8,9 @@
 //!   rename: the temporary file is removed and nothing appears at the final name
 //!   ([`OutputError`] says what happened; the command exits with code 4);
 //! - the process killed (SIGKILL, a second Ctrl-C, power loss): the temporary
-//!   `.NAME.partial-PID` file stays, clearly partial, and the final name is untouched.
+//!   `.NAME.partial-PID` file stays, clearly partial, and the final name is untouched (a
+//!   checkpoint's is removed once a later run puts a complete checkpoint at that name,
+//!   [`remove_orphaned_partials`]).
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
@@ -49,6 +51,41 @@ pub fn partial_path_of(final_path: &Path, pid: u32) -> PathBuf {
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "output".into());
     final_path.with_file_name(format!(".{name}.partial-{pid}"))
+}
+
+/// Removes the temporary files that killed processes left for the output at `final_path`
+/// (`.NAME.partial-PID` of a PID that no longer runs here); returns how many. Only for outputs
+/// whose partial state is of no use once a newer complete file is in place (checkpoints): a
+/// killed run's partial CSV is what `resume --csv-from` reads. Does nothing where running
+/// processes cannot be told (no `/proc`).
+pub fn remove_orphaned_partials(final_path: &Path) -> usize {
+    let proc = Path::new("/proc");
+    if !proc.join("self").exists() {
+        return 0;
+    }
+    let real = resolve_links(final_path);
+    let (Some(dir), Some(name)) = (real.parent(), real.file_name()) else {
+        return 0;
+    };
+    let dir = if dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        dir
+    };
+    let prefix = format!(".{}.partial-", name.to_string_lossy());
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return 0;
+    };
+    let orphaned = |pid: u32| pid != std::process::id() && !proc.join(pid.to_string()).exists();
+    entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            let file = p.file_name().map(|f| f.to_string_lossy().into_owned());
+            let pid = file.and_then(|f| f.strip_prefix(&prefix)?.parse::<u32>().ok());
+            pid.is_some_and(orphaned)
+        })
+        .filter(|p| std::fs::remove_file(p).is_ok())
+        .count()
 }
 
 /// The temporary file of an output is no longer where it was written.
@@ -321,6 +358,28 @@ mod tests {
         let e = f.commit().unwrap_err();
         assert!(e.to_string().starts_with("--summary "), "{e}");
         assert!(!target.exists());
+        let _ = std::fs::remove_dir_all(&d);
+    }
+
+    /// Linux PIDs are below `PID_MAX_LIMIT` = 2²²: this one never runs; PID 1 always does.
+    #[test]
+    #[cfg(target_os = "linux")]
+    fn only_the_partial_files_of_processes_gone_are_removed() {
+        let d = dir("orphans");
+        let target = d.join("run.ckpt");
+        let dead = partial_path_of(&target, (1 << 22) + 1);
+        let kept = [
+            partial_path_of(&target, 1),
+            partial_path(&target),
+            partial_path_of(&d.join("run.csv"), (1 << 22) + 1),
+            d.join(".run.ckpt.partial-x"),
+        ];
+        for p in kept.iter().chain([&dead]) {
+            std::fs::write(p, b"half").unwrap();
+        }
+        assert_eq!(remove_orphaned_partials(&target), 1);
+        assert!(!dead.exists());
+        assert!(kept.iter().all(|p| p.exists()), "{kept:?}");
         let _ = std::fs::remove_dir_all(&d);
     }
 }
