@@ -218,19 +218,9 @@ fn resumed_outputs(
 /// A `.NAME.partial-PID` file beside `csv` (left by a run of this CSV killed outright) that
 /// holds the first `rows` rows, to name in the refusal.
 fn partial_with_rows(csv: &Path, rows: u64) -> Option<PathBuf> {
-    let name = csv.file_name()?.to_string_lossy();
-    let prefix = format!(".{name}.partial-");
-    let dir = csv
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let mut found: Vec<PathBuf> = std::fs::read_dir(dir)
-        .ok()?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| {
-            p.file_name()
-                .is_some_and(|f| f.to_string_lossy().starts_with(&prefix))
-        })
+    let mut found: Vec<PathBuf> = platefall_record::output::partials_of(csv)
+        .into_iter()
+        .map(|(p, _)| p)
         .filter(|p| platefall_record::check_csv_prefix(p, rows).is_ok())
         .collect();
     found.sort();

@@ -53,6 +53,30 @@ pub fn partial_path_of(final_path: &Path, pid: u32) -> PathBuf {
     final_path.with_file_name(format!(".{name}.partial-{pid}"))
 }
 
+/// The temporary files beside the output at `final_path` (`.NAME.partial-SUFFIX`, symbolic
+/// links resolved as [`PendingFile`] resolves them), each with the PID its suffix names, if it
+/// names one; none when the directory cannot be read.
+pub fn partials_of(final_path: &Path) -> Vec<(PathBuf, Option<u32>)> {
+    let real = resolve_links(final_path);
+    let Some(name) = real.file_name() else {
+        return Vec::new();
+    };
+    let prefix = format!(".{}.partial-", name.to_string_lossy());
+    let dir = real.parent().filter(|d| !d.as_os_str().is_empty());
+    let Ok(entries) = std::fs::read_dir(dir.unwrap_or(Path::new("."))) else {
+        return Vec::new();
+    };
+    entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter_map(|p| {
+            let file = p.file_name()?.to_string_lossy().into_owned();
+            let suffix = file.strip_prefix(&prefix)?;
+            let pid = suffix.parse::<u32>().ok();
+            Some((p, pid))
+        })
+        .collect()
+}
+
 /// Removes the temporary files that killed processes left for the output at `final_path`
 /// (`.NAME.partial-PID` of a PID that no longer runs here); returns how many. Only for outputs
 /// whose partial state is of no use once a newer complete file is in place (checkpoints): a
@@ -63,28 +87,11 @@ pub fn remove_orphaned_partials(final_path: &Path) -> usize {
     if !proc.join("self").exists() {
         return 0;
     }
-    let real = resolve_links(final_path);
-    let (Some(dir), Some(name)) = (real.parent(), real.file_name()) else {
-        return 0;
-    };
-    let dir = if dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        dir
-    };
-    let prefix = format!(".{}.partial-", name.to_string_lossy());
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return 0;
-    };
     let orphaned = |pid: u32| pid != std::process::id() && !proc.join(pid.to_string()).exists();
-    entries
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| {
-            let file = p.file_name().map(|f| f.to_string_lossy().into_owned());
-            let pid = file.and_then(|f| f.strip_prefix(&prefix)?.parse::<u32>().ok());
-            pid.is_some_and(orphaned)
-        })
-        .filter(|p| std::fs::remove_file(p).is_ok())
+    partials_of(final_path)
+        .into_iter()
+        .filter(|(_, pid)| pid.is_some_and(orphaned))
+        .filter(|(p, _)| std::fs::remove_file(p).is_ok())
         .count()
 }
 
