@@ -120,8 +120,12 @@ impl RigidBody6 {
         self.ab.step(t, &mut y, f, h);
         self.spins.fill_back(&self.ab);
         let turn = self.spins.increment(&self.ab, h);
-        let mut q = self.state.orientation * UnitQuaternion::from_scaled_axis(turn);
-        q.renormalize();
+        let mut q = self.state.orientation;
+        if turn != Vector3::zeros() {
+            // Unit up to round-off (module docs of `chart`): the renormalisation removes it.
+            q = q * UnitQuaternion::from_scaled_axis(turn);
+            q.renormalize();
+        }
         self.state = State6 {
             position: Vector3::new(y[0], y[1], y[2]),
             velocity: Vector3::new(y[3], y[4], y[5]),
