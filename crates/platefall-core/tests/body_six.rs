@@ -13,8 +13,10 @@ use platefall_core::body::six::{
     thin_plate_inertia, Accel6, Constraint6, Loads6, PhysicalPlate6, Plate6, RigidBody6, SixError,
     Snapshot6, State6, StrongCoupling6,
 };
-use platefall_core::body::{wrap_angle, AbStart, BodyState, Dof, InertialLoads, PlateProps, RigidBody};
 use platefall_core::body::StrongCoupling;
+use platefall_core::body::{
+    wrap_angle, AbStart, BodyState, Dof, InertialLoads, PlateProps, RigidBody,
+};
 use platefall_core::config::PhysicalPlate;
 use platefall_core::flow::AddedMass;
 
@@ -61,7 +63,8 @@ fn torque_free_drift(order: usize, h: f64) -> (f64, f64) {
         orientation: UnitQuaternion::from_euler_angles(0.2, -0.4, 1.0),
         ..State6::at_rest()
     };
-    let mut body = RigidBody6::new(plate, Constraint6::PinnedPoint, state, order, AbStart::Ramp).unwrap();
+    let mut body =
+        RigidBody6::new(plate, Constraint6::PinnedPoint, state, order, AbStart::Ramp).unwrap();
     let (e0, l0) = invariants(&body);
     for (t, h) in steps(h, 10.0) {
         body.step(t, &Loads6::default(), h);
@@ -87,7 +90,10 @@ fn torque_free_rotation_conserves_energy_and_momentum_to_the_order_of_the_method
             h / 2.0
         );
         for p in [pe, pl] {
-            assert!((p - order as f64).abs() < 0.35, "AB{order}: observed order {p}");
+            assert!(
+                (p - order as f64).abs() < 0.35,
+                "AB{order}: observed order {p}"
+            );
         }
     }
 }
@@ -98,7 +104,10 @@ fn spin_about(axis: usize) -> (Vector3<f64>, f64, f64) {
     let plate = Plate6::principal(1.0, [1.0, 2.0, 3.0], 0.0, 0.0).unwrap();
     let mut omega = Vector3::repeat(1e-6);
     omega[axis] = 1.0;
-    let state = State6 { omega, ..State6::at_rest() };
+    let state = State6 {
+        omega,
+        ..State6::at_rest()
+    };
     let mut body = RigidBody6::new(plate, Constraint6::Free, state, 4, AbStart::Ramp).unwrap();
     let (mut off_axis, mut least) = (0.0_f64, f64::INFINITY);
     for (t, h) in steps(0.01, 40.0) {
@@ -125,7 +134,10 @@ fn the_intermediate_axis_is_unstable_and_the_others_are_not() {
     for axis in [0, 2] {
         let (_, off, least) = spin_about(axis);
         eprintln!("axis {axis}: largest off-axis rate {off:.3e}, least spin {least:.9}");
-        assert!(off < 1e-5 && least > 0.999, "axis {axis}: off {off}, least {least}");
+        assert!(
+            off < 1e-5 && least > 0.999,
+            "axis {axis}: off {off}, least {least}"
+        );
     }
 }
 
@@ -167,7 +179,9 @@ fn a_ballistic_path_is_exact_and_a_neutrally_buoyant_body_stays_at_rest() {
         let want: Vector3<f64> = x0 + v0 * t + a * (0.5 * t * t);
         let err = (s.position - want).norm() / want.norm();
         let verr = (s.velocity - (v0 + a * t)).norm() / (v0 + a * t).norm();
-        eprintln!("AB{order}: ballistic position error {err:.2e}, velocity {verr:.2e} at t = {t:.3}");
+        eprintln!(
+            "AB{order}: ballistic position error {err:.2e}, velocity {verr:.2e} at t = {t:.3}"
+        );
         assert!(err < 1e-13 && verr < 1e-13, "AB{order}: {err}, {verr}");
         assert_eq!(s.orientation, q0, "no rotation without moment");
     }
@@ -203,7 +217,11 @@ fn planar_motion_is_the_two_dimensional_motion() {
     // relative to the motion's scale after 3000 steps (measured: printed).
     let (mass, pitch, gravity, displaced) = (1.3, 0.21, 0.9, 0.1);
     let (gamma, alpha) = (-FRAC_PI_4, 0.1);
-    for (order, start) in [(2, AbStart::Ramp), (4, AbStart::Ramp), (6, AbStart::Extrapolate)] {
+    for (order, start) in [
+        (2, AbStart::Ramp),
+        (4, AbStart::Ramp),
+        (6, AbStart::Extrapolate),
+    ] {
         let props = PlateProps {
             displaced,
             ..PlateProps::new(mass, pitch, gravity)
@@ -223,7 +241,11 @@ fn planar_motion_is_the_two_dimensional_motion() {
             let h = 0.01 * (1.0 + 0.4 * (0.37 * n as f64).sin());
             let f = flat.state.frame();
             let (fx, fy, m) = planar_loads(f.u0, f.v0, f.omega);
-            flat.step(t, &InertialLoads::from_body_axes(flat.state.theta, fx, fy, m), h);
+            flat.step(
+                t,
+                &InertialLoads::from_body_axes(flat.state.theta, fx, fy, m),
+                h,
+            );
             let s = body.state();
             let u = s.body_velocity();
             let (fx, fy, m) = planar_loads(u.x, u.y, s.omega.z);
@@ -294,7 +316,10 @@ fn strong_coupling_gives_the_light_sphere_its_added_mass_where_explicit_coupling
     };
     for n in 0..50 {
         let a = sc.acceleration(&plate, Constraint6::Free, body.state(), &rest);
-        assert!((a.linear - want).norm() < 1e-14 * want.norm(), "step {n}: {a:?}");
+        assert!(
+            (a.linear - want).norm() < 1e-14 * want.norm(),
+            "step {n}: {a:?}"
+        );
         body.step_with(n as f64 * 0.01, a, 0.01);
     }
     let v = body.state().velocity;
@@ -305,7 +330,10 @@ fn strong_coupling_gives_the_light_sphere_its_added_mass_where_explicit_coupling
     for _ in 0..10 {
         a = (state.to_inertial(&force) - added * a) / mass;
     }
-    assert!(a.norm() > 1e15 * want.norm(), "explicit coupling stayed bounded: {a}");
+    assert!(
+        a.norm() > 1e15 * want.norm(),
+        "explicit coupling stayed bounded: {a}"
+    );
 }
 
 #[test]
@@ -328,7 +356,10 @@ fn strong_coupling_keeps_the_frames_apart() {
     let body_accel = Vector3::new(w.x / mass, w.y / (mass + added), w.z / mass);
     let got = sc.acceleration(&plate, Constraint6::Free, &state, &Loads6::default());
     let want = state.to_inertial(&body_accel);
-    assert!((got.linear - want).norm() < 1e-14 * want.norm(), "{got:?} vs {want}");
+    assert!(
+        (got.linear - want).norm() < 1e-14 * want.norm(),
+        "{got:?} vs {want}"
+    );
     assert!(got.angular.norm() < 1e-15, "{got:?}");
     // Pinned about the span with a moment M_z: ω̇_z = M_z/(I_z + J), no translation.
     let spun = Loads6 {
@@ -365,7 +396,8 @@ fn strong_coupling_reduces_to_explicit_coupling_without_added_mass() {
         let strong = sc.acceleration(&plate, c, &state, &loads);
         let body = RigidBody6::new(plate, c, state, 2, AbStart::Ramp).unwrap();
         let explicit = body.acceleration(&loads);
-        let gap = (strong.linear - explicit.linear).norm() + (strong.angular - explicit.angular).norm();
+        let gap =
+            (strong.linear - explicit.linear).norm() + (strong.angular - explicit.angular).norm();
         assert!(gap < 1e-13, "{c:?}: {strong:?} vs {explicit:?}");
     }
 }
@@ -376,7 +408,11 @@ fn planar_strong_coupling_is_the_two_dimensional_one() {
     // (u, v, ω_z), a light plate moving and spinning: the 6-DOF accelerations equal the 2-D strong
     // coupling's (body/strong.rs), including the turning term K (θ̇ v₀, −θ̇ u₀, 0). Tolerance
     // 1e-13: 6 × 6 LU against 3 × 3 cofactors.
-    let k2 = [[-0.02, 0.01, 0.003], [0.015, -0.8, 0.05], [0.002, 0.04, -0.025]];
+    let k2 = [
+        [-0.02, 0.01, 0.003],
+        [0.015, -0.8, 0.05],
+        [0.002, 0.04, -0.025],
+    ];
     let (mass, pitch, gravity, displaced) = (0.1, 0.01, 20.0, 0.05);
     let props = PlateProps {
         displaced,
@@ -418,13 +454,249 @@ fn planar_strong_coupling_is_the_two_dimensional_one() {
         force: Vector3::new(rest[0], rest[1], 0.0),
         moment: Vector3::new(0.0, 0.0, rest[2]),
     };
-    for (dof, c) in [(Dof::Free, Constraint6::Free), (Dof::PitchOnly, Constraint6::PinnedSpan)] {
+    for (dof, c) in [
+        (Dof::Free, Constraint6::Free),
+        (Dof::PitchOnly, Constraint6::PinnedSpan),
+    ] {
         let f = flat.derivative(&props, dof, &s2, rest, 0.0);
         let a = sc.acceleration(&plate, c, &s3, &loads);
         let got = [a.linear.x, a.linear.y, a.angular.z];
         for (g, w) in got.iter().zip(&f[3..]) {
-            assert!((g - w).abs() < 1e-13 * w.abs().max(1.0), "{dof:?}: {got:?} vs {f:?}");
+            assert!(
+                (g - w).abs() < 1e-13 * w.abs().max(1.0),
+                "{dof:?}: {got:?} vs {f:?}"
+            );
         }
-        assert!(a.linear.z == 0.0 && a.angular.x.abs() + a.angular.y.abs() < 1e-15, "{a:?}");
+        assert!(
+            a.linear.z == 0.0 && a.angular.x.abs() + a.angular.y.abs() < 1e-15,
+            "{a:?}"
+        );
     }
+}
+
+#[test]
+fn the_card_in_three_dimensions() {
+    // Gallaway (1985) Table I, docs/physics.md §8, §9: m = 7.02e-3/32.174 slug, I_z = 1.13e-6
+    // slug·ft², I_x = m b²/12 ≈ 8.1e-6, I_y ≈ 9.2e-6 slug·ft² (quoted to two digits: ±0.05e-6);
+    // m*, I* on c divided by b/c are the 2-D card's (config::PhysicalPlate, to round-off) and
+    // ≈ 2.20, 0.183 (quoted to three digits); g* ≈ 0.894; Re ≈ 4770.
+    let card = PhysicalPlate6::card();
+    let [ix, iy, iz] = card.inertia;
+    assert!(
+        (ix - 8.1e-6).abs() < 0.05e-6 && (iy - 9.2e-6).abs() < 0.05e-6,
+        "{ix}, {iy}"
+    );
+    assert_eq!(iz, 1.13e-6);
+    let m = 7.02e-3 / 32.174;
+    assert!((ix - m * card.span.powi(2) / 12.0).abs() < 1e-20);
+    // The measured pitch inertia is m c²/12 to 0.6 %.
+    let [_, _, thin_z] = thin_plate_inertia(m, card.chord, card.span);
+    assert!((iz / thin_z - 1.0).abs() < 0.006, "{}", iz / thin_z);
+    let plate = card.nondimensional().unwrap();
+    let ar = card.aspect_ratio();
+    assert!((ar - 8.0 / 3.0).abs() < 1e-15);
+    let flat = PhysicalPlate::card();
+    let (m2, i2) = (plate.mass() / ar, plate.inertia()[(2, 2)] / ar);
+    assert!((m2 / flat.mass_ratio() - 1.0).abs() < 1e-14, "{m2}");
+    assert!((i2 / flat.inertia_ratio() - 1.0).abs() < 1e-14, "{i2}");
+    assert!(
+        (m2 - 2.20).abs() < 0.005 && (i2 - 0.183).abs() < 0.0005,
+        "{m2}, {i2}"
+    );
+    assert!(
+        (plate.gravity() - 0.894).abs() < 0.0005,
+        "{}",
+        plate.gravity()
+    );
+    assert!(
+        (card.reynolds() - 4770.0).abs() < 5.0,
+        "{}",
+        card.reynolds()
+    );
+    let inertia = plate.inertia();
+    assert!(inertia[(0, 1)] == 0.0 && inertia[(0, 2)] == 0.0 && inertia[(1, 2)] == 0.0);
+    eprintln!(
+        "card: m* = {:.4} (2-D {m2:.4}), I* = diag({:.4}, {:.4}, {:.4}) (2-D pitch {i2:.4}), g* = {:.4}",
+        plate.mass(),
+        inertia[(0, 0)],
+        inertia[(1, 1)],
+        inertia[(2, 2)],
+        plate.gravity()
+    );
+    // The release of case D: V₀ = U at γ₀ = −π/4, α₀ = 0.1, the span horizontal.
+    let s = PhysicalPlate6::card_release();
+    assert!((s.velocity.norm() - 1.0).abs() < 1e-15);
+    assert!((s.velocity.y.atan2(s.velocity.x) + FRAC_PI_4).abs() < 1e-15);
+    let chord = s.to_inertial(&Vector3::x());
+    assert!((chord.y.atan2(chord.x) - (-FRAC_PI_4 + 0.1)).abs() < 1e-15);
+    assert_eq!(s.span_axis(), Vector3::z());
+    assert_eq!(s.omega, Vector3::zeros());
+    // A thin rectangle of the card's size: I_y = I_x + I_z (perpendicular axes).
+    let thin = PhysicalPlate6 { ..card }.thin_rectangle();
+    let [a, b, c] = thin.inertia;
+    assert!((b - (a + c)).abs() < 1e-20 && (c - thin_z).abs() < 1e-22);
+}
+
+#[test]
+fn bad_input_gets_a_typed_error() {
+    let i = [0.1, 0.2, 0.3];
+    for m in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(
+            matches!(Plate6::principal(m, i, 1.0, 0.0), Err(SixError::Mass(_))),
+            "{m}"
+        );
+    }
+    for bad in [[1.0, -1.0, 1.0], [0.0, 1.0, 1.0], [1.0, f64::NAN, 1.0]] {
+        assert!(matches!(
+            Plate6::principal(1.0, bad, 1.0, 0.0),
+            Err(SixError::Inertia(_))
+        ));
+    }
+    let mut skew = Matrix3::identity();
+    skew[(0, 1)] = 0.1;
+    assert!(matches!(
+        Plate6::new(1.0, skew, 1.0, 0.0),
+        Err(SixError::Inertia(_))
+    ));
+    // Symmetric with positive diagonal but indefinite.
+    let indefinite = Matrix3::new(1.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0, 0.0, 1.0);
+    assert!(matches!(
+        Plate6::new(1.0, indefinite, 1.0, 0.0),
+        Err(SixError::Inertia(_))
+    ));
+    assert!(matches!(
+        Plate6::principal(1.0, i, -1.0, 0.0),
+        Err(SixError::Gravity(_))
+    ));
+    assert!(matches!(
+        Plate6::principal(1.0, i, 1.0, f64::NAN),
+        Err(SixError::Displaced(_))
+    ));
+    let plate = Plate6::principal(1.0, i, 1.0, 0.0).unwrap();
+    let make = |s: State6, c| RigidBody6::new(plate, c, s, 3, AbStart::Ramp).map(|_| ());
+    let nan_v = State6 {
+        velocity: Vector3::new(0.0, f64::NAN, 0.0),
+        ..State6::at_rest()
+    };
+    assert_eq!(
+        make(nan_v, Constraint6::Free),
+        Err(SixError::NotFinite("velocity"))
+    );
+    let long = State6 {
+        orientation: UnitQuaternion::new_unchecked(nalgebra::Quaternion::new(1.1, 0.0, 0.0, 0.0)),
+        ..State6::at_rest()
+    };
+    assert!(matches!(
+        make(long, Constraint6::Free),
+        Err(SixError::Orientation(_))
+    ));
+    let wobble = State6 {
+        omega: Vector3::new(0.1, 0.0, 1.0),
+        ..State6::at_rest()
+    };
+    assert!(matches!(
+        make(wobble, Constraint6::PinnedSpan),
+        Err(SixError::PinnedSpin(_))
+    ));
+    assert!(make(wobble, Constraint6::PinnedPoint).is_ok());
+    assert!(matches!(
+        RigidBody6::new(
+            plate,
+            Constraint6::Free,
+            State6::at_rest(),
+            7,
+            AbStart::Ramp
+        ),
+        Err(SixError::History(_))
+    ));
+    // K whose left-hand side is not positive definite: an added mass "lighter than nothing".
+    let mut k = [[0.0; 6]; 6];
+    k[1][1] = 2.0;
+    let err = StrongCoupling6::new(&plate, k).unwrap_err();
+    assert!(matches!(err, SixError::AddedMass(e) if e < 0.0), "{err}");
+    k[1][1] = f64::NAN;
+    assert!(matches!(
+        StrongCoupling6::new(&plate, k),
+        Err(SixError::AddedMass(_))
+    ));
+    let card = PhysicalPlate6 {
+        span: 0.0,
+        ..PhysicalPlate6::card()
+    };
+    let err = card.nondimensional().unwrap_err();
+    assert_eq!(
+        err,
+        SixError::Dimension {
+            name: "span",
+            value: 0.0
+        }
+    );
+    assert_eq!(err.to_string(), "the span must be finite and > 0, got 0");
+    let light = PhysicalPlate6 {
+        mass: -1.0,
+        ..PhysicalPlate6::card()
+    };
+    assert!(matches!(light.nondimensional(), Err(SixError::Mass(_))));
+}
+
+/// The free body of the checkpoint test and the loads it flies under (a function of its state).
+fn tumbling_step(body: &mut RigidBody6, t: f64, h: f64) {
+    let s = body.state();
+    let u = s.body_velocity();
+    let (fx, fy, mz) = planar_loads(u.x, u.y, s.omega.z);
+    let loads = Loads6 {
+        force: Vector3::new(fx, fy, -0.2 * u.z),
+        moment: Vector3::new(-0.01 * s.omega.x + 0.02 * u.y * u.z, -0.01 * s.omega.y, mz),
+    };
+    body.step(t, &loads, h);
+}
+
+#[test]
+fn a_checkpoint_restores_the_body_bit_for_bit() {
+    // 30 steps, a checkpoint through bincode (the checkpoint files' encoding), 40 more steps on
+    // the original and on a fresh body restored from it: identical bits. With the seed's start
+    // (`Extrapolate`, whose invented history the checkpoint must carry) and order 5.
+    let plate = Plate6::new(1.5, tilted_inertia(), 0.9, 0.0).unwrap();
+    let start = State6 {
+        omega: Vector3::new(0.3, -0.2, 1.0),
+        ..State6::release(1.0, -FRAC_PI_4, 0.1)
+    };
+    let new = || RigidBody6::new(plate, Constraint6::Free, start, 5, AbStart::Extrapolate).unwrap();
+    let mut body = new();
+    let mut t = 0.0;
+    for n in 0..30 {
+        let h = 0.01 * (1.0 + 0.3 * (n as f64).sin());
+        tumbling_step(&mut body, t, h);
+        t += h;
+    }
+    let bytes = bincode::serialize(&body.save()).unwrap();
+    let snap: Snapshot6 = bincode::deserialize(&bytes).unwrap();
+    assert_eq!(snap, body.save());
+    let mut copy = new();
+    copy.restore(&snap).unwrap();
+    for n in 30..70 {
+        let h = 0.01 * (1.0 + 0.3 * (n as f64).sin());
+        tumbling_step(&mut body, t, h);
+        tumbling_step(&mut copy, t, h);
+        t += h;
+    }
+    assert_eq!(body.state(), copy.state());
+    assert_eq!(body.save(), copy.save());
+    assert!(
+        body.state().omega.x != 0.0 && body.state().position.z != 0.0,
+        "it left the plane"
+    );
+    // A snapshot whose orientation history does not match its derivative history is refused,
+    // and the body is left as it was.
+    let mut broken = body.save();
+    broken.spins.pop();
+    let before = body.save();
+    assert_eq!(body.restore(&broken), Err(SixError::SpinHistory));
+    assert_eq!(body.save(), before);
+    let mut stretched = body.save();
+    stretched.spins[1].orientation[3] *= 1.01;
+    assert!(matches!(
+        body.restore(&stretched),
+        Err(SixError::Orientation(_))
+    ));
 }

@@ -123,7 +123,7 @@ impl RigidBody6 {
         let mut q = self.state.orientation;
         if turn != Vector3::zeros() {
             // Unit up to round-off (module docs of `chart`): the renormalisation removes it.
-            q = q * UnitQuaternion::from_scaled_axis(turn);
+            q *= UnitQuaternion::from_scaled_axis(turn);
             q.renormalize();
         }
         self.state = State6 {
@@ -164,7 +164,7 @@ impl RigidBody6 {
         let spins = snap
             .spins
             .iter()
-            .map(SpinEntry::to_pair)
+            .map(|e| e.to_pair())
             .collect::<Result<Vec<_>, _>>()?;
         let mut ab = self.ab.clone();
         ab.restore_history(&snap.history)?;
@@ -200,7 +200,7 @@ pub struct SpinEntry {
 
 impl SpinEntry {
     /// The entry as the integrator keeps it, if finite and of unit norm.
-    fn to_pair(&self) -> Result<(UnitQuaternion<f64>, Vector3<f64>), SixError> {
+    fn to_pair(self) -> Result<(UnitQuaternion<f64>, Vector3<f64>), SixError> {
         let q = Quaternion::from(nalgebra::Vector4::from(self.orientation));
         let w = Vector3::from(self.omega);
         if !(q.coords.iter().chain(w.iter()).all(|x| x.is_finite())) {

@@ -51,7 +51,7 @@ impl StrongCoupling6 {
         let smallest = SymmetricEigen::new(0.5 * (lhs + lhs.transpose()))
             .eigenvalues
             .min();
-        if !(smallest > 0.0) {
+        if smallest.is_nan() || smallest <= 0.0 {
             return Err(SixError::AddedMass(smallest));
         }
         let moments: Matrix3<f64> = lhs.fixed_view::<3, 3>(3, 3).into_owned();
