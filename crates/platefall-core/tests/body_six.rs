@@ -443,12 +443,13 @@ fn planar_strong_coupling_is_the_two_dimensional_one() {
         omega: 2.3,
         ..BodyState::default()
     };
-    let s3 = State6 {
-        velocity: Vector3::new(s2.xdot, s2.ydot, 0.0),
-        orientation: UnitQuaternion::from_axis_angle(&Vector3::z_axis(), s2.theta),
-        omega: Vector3::new(0.0, 0.0, s2.omega),
-        ..State6::at_rest()
-    };
+    let s3 = State6::from_planar(&s2);
+    // The 2-D state's motion as the flow sees it is the 6-DOF one's.
+    let (f2, u3) = (s2.frame(), s3.body_velocity());
+    assert!(
+        (f2.u0 - u3.x).abs() + (f2.v0 - u3.y).abs() < 1e-15 && u3.z == 0.0,
+        "{u3}"
+    );
     let rest = [0.3, -0.4, 0.05];
     let loads = Loads6 {
         force: Vector3::new(rest[0], rest[1], 0.0),

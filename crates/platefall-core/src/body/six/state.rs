@@ -4,6 +4,7 @@
 use nalgebra::{UnitQuaternion, Vector3};
 
 use super::SixError;
+use crate::body::BodyState;
 
 /// How far the orientation's norm may be from 1 in a state handed in (a few thousand round-offs).
 pub(super) const UNIT_TOL: f64 = 1e-12;
@@ -43,10 +44,23 @@ impl State6 {
     /// flight-path angle γ₀ in the X–Y plane, pitched to θ₀ = γ₀ + α₀ about the span, the span
     /// horizontal along Z, not rotating.
     pub fn release(speed: f64, gamma: f64, alpha: f64) -> Self {
+        Self::from_planar(&BodyState {
+            theta: gamma + alpha,
+            xdot: speed * gamma.cos(),
+            ydot: speed * gamma.sin(),
+            ..BodyState::default()
+        })
+    }
+
+    /// The 2-D state (docs/physics.md §3, §6) as a 6-DOF one: (X, Y) and (Ẋ, Ẏ) in the X–Y plane,
+    /// the pitch θ and rate θ̇ about the span, which lies along Z. A 2-D motion law (the static and
+    /// forced cases' prescribed motions) gives the 3-D prescribed motion this way.
+    pub fn from_planar(s: &BodyState) -> Self {
         Self {
-            velocity: Vector3::new(speed * gamma.cos(), speed * gamma.sin(), 0.0),
-            orientation: UnitQuaternion::from_axis_angle(&Vector3::z_axis(), gamma + alpha),
-            ..Self::at_rest()
+            position: Vector3::new(s.x, s.y, 0.0),
+            velocity: Vector3::new(s.xdot, s.ydot, 0.0),
+            orientation: UnitQuaternion::from_axis_angle(&Vector3::z_axis(), s.theta),
+            omega: Vector3::new(0.0, 0.0, s.omega),
         }
     }
 
