@@ -13,9 +13,8 @@ use platefall_core::body::six::{
     thin_plate_inertia, Accel6, Constraint6, Loads6, PhysicalPlate6, Plate6, RigidBody6, SixError,
     Snapshot6, State6, StrongCoupling6,
 };
-use platefall_core::body::StrongCoupling;
 use platefall_core::body::{
-    wrap_angle, AbStart, BodyState, Dof, InertialLoads, PlateProps, RigidBody,
+    wrap_angle, AbStart, BodyState, Dof, InertialLoads, PlateProps, RigidBody, StrongCoupling,
 };
 use platefall_core::config::PhysicalPlate;
 use platefall_core::flow::AddedMass;
