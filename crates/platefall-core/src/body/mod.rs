@@ -1,10 +1,11 @@
 //! Rigid-body flight mechanics of the plate (SPEC §6): the Cartesian equations of motion, the
 //! variable-step Adams–Bashforth integrator, the strong (added-mass implicit) coupling and the
-//! advisory for explicit coupling.
+//! advisory for explicit coupling; [`six`]: the six-degree-of-freedom body of the 3-D flight.
 
 mod adams;
 mod coupling;
 mod rigid;
+pub mod six;
 mod strong;
 
 pub use adams::{ab_weights, AbError, AbHistory, AbStart, AdamsBashforth, MAX_ORDER};
