@@ -319,7 +319,7 @@ fn a_diverging_run_exits_3_with_complete_outputs_that_say_so() {
         "--cfl",
         "1.0",
         // The implicit far field is stable at this Courant number; the explicit one is not
-        // (around the seed's plate, one cell of 1/16 thick).
+        // (around the dissertation's plate, one cell of 1/16 thick).
         "--far-field",
         "explicit",
         "--thickness",

@@ -17,7 +17,7 @@ pub struct SolverArgs {
     /// Reynolds number U c / ν [default: 5000, or the preset's for pinned/free].
     #[arg(long, allow_negative_numbers = true)]
     pub re: Option<f64>,
-    /// Cells per chord N (h = c/N). The seed used 16; the free-fall rotation rate changes by 17 %
+    /// Cells per chord N (h = c/N). The dissertation used 16; the free-fall rotation rate changes by 17 %
     /// between N = 32 and 64 (docs/verification.md), so the default is 64.
     #[arg(long, default_value_t = defaults::RESOLUTION)]
     pub resolution: usize,
@@ -27,7 +27,7 @@ pub struct SolverArgs {
     /// Write the run summary as JSON to this file.
     #[arg(long, value_name = "FILE")]
     pub summary: Option<PathBuf>,
-    /// Use the seed's exact grid and plate (N = 16, a rectangle 1/16 thick, 24 × 27 stretched
+    /// Use the dissertation's exact grid and plate (N = 16, a rectangle 1/16 thick, 24 × 27 stretched
     /// intervals over 10 chords); overrides --resolution, --extent and --growth.
     #[arg(long, conflicts_with_all = ["thickness", "extent", "growth", "shape", "edge_radius", "polygon"])]
     pub seed_grid: bool,
@@ -46,7 +46,7 @@ pub struct SolverArgs {
     /// Time-step ceiling (seed: 0.01).
     #[arg(long, default_value_t = defaults::DT_MAX, allow_negative_numbers = true)]
     pub dt_max: f64,
-    /// The seed's rotation rule Δt·|θ̇| ≤ CC.
+    /// The dissertation's rotation rule Δt·|θ̇| ≤ CC.
     #[arg(long, default_value_t = defaults::CC, allow_negative_numbers = true)]
     pub cc: f64,
     /// How the transport by the grid velocity is stepped outside the near field: `implicit`

@@ -1,4 +1,4 @@
-//! The plate's description on the command line (SPEC §2, §6): the card preset or non-dimensional
+//! The plate's description on the command line (docs/physics.md §2, §6): the card preset or non-dimensional
 //! values ([`BodyArgs`]), or a plate described physically ([`PhysicalArgs`]: width, thickness,
 //! density, a named fluid, gravity), which the library's [`Plate::strip`] turns into Re, m*, I*,
 //! g*, m_f*; and the coupling and body-integrator options of the pinned and free cases.
@@ -13,7 +13,7 @@ use platefall_core::sim::ValidatedConfig;
 #[derive(Args, Debug, Clone)]
 #[command(next_help_heading = "Plate, coupling and release")]
 pub struct BodyArgs {
-    /// Preset giving Re, m*, I*, g*: `card` is the seed's card in sea-level air (SPEC §8; its
+    /// Preset giving Re, m*, I*, g*: `card` is the dissertation's card in sea-level air (docs/physics.md §8; its
     /// weight is the apparent weight, m_f* = 0) [default: card, unless the plate is described
     /// physically].
     #[arg(long, value_enum)]
@@ -34,7 +34,7 @@ pub struct BodyArgs {
     /// An applied moment on the plate, by ρU²c² (counter-clockwise positive).
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub torque: f64,
-    /// How the flow's loads enter the plate's equations (`explicit` is the seed's scheme).
+    /// How the flow's loads enter the plate's equations (`explicit` is the dissertation's scheme).
     #[arg(long, value_enum, default_value_t = CouplingArg::Strong)]
     pub coupling: CouplingArg,
     /// Adams–Bashforth order for the plate's equations of motion, 1..=6.
@@ -62,7 +62,7 @@ pub struct BodyArgs {
 /// `--preset`.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq)]
 pub enum Preset {
-    /// The seed's card: chord 3 in, span 8 in, 7.02e-3 lbf, U = 3 ft/s in sea-level air.
+    /// The dissertation's card: chord 3 in, span 8 in, 7.02e-3 lbf, U = 3 ft/s in sea-level air.
     Card,
     /// No preset: give --re, --mass, --inertia and --gravity.
     None,
@@ -73,7 +73,7 @@ pub enum Preset {
 pub enum AbStartArg {
     /// Raise the order 1, 2, … over the first steps.
     Ramp,
-    /// The seed's start: extrapolate the history linearly backwards.
+    /// The dissertation's start: extrapolate the history linearly backwards.
     Extrapolate,
 }
 
@@ -153,7 +153,7 @@ pub enum FluidArg {
 pub enum CouplingArg {
     /// The flow's added-mass answer implicit in the body's equations: stable for any m*, I* > 0.
     Strong,
-    /// The seed's: loads taken as given; diverges for m* < π/4 or I* < π/128.
+    /// The dissertation's: loads taken as given; diverges for m* < π/4 or I* < π/128.
     Explicit,
 }
 

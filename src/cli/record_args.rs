@@ -127,7 +127,7 @@ pub struct RecordArgs {
     pub field_window: String,
 
     /// Observer frame of the streamlines and the speed image: 1 fixed to the plate, 2 fixed in the
-    /// fluid, 3 translating with the plate but not rotating (the seed's), 4 rotating with the
+    /// fluid, 3 translating with the plate but not rotating (the dissertation's), 4 rotating with the
     /// plate but not translating
     #[arg(long, value_name = "1..4", default_value_t = 3)]
     pub streamlines_frame: u8,

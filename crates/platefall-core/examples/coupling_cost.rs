@@ -1,4 +1,4 @@
-//! The cost of strong coupling (SPEC §6), `platefall bench`-style: the card released at once
+//! The cost of strong coupling (docs/physics.md §6), `platefall bench`-style: the card released at once
 //! (no development) steps with `--coupling strong` and `--coupling explicit` in alternating blocks
 //! on one thread; the best block of each gives ns per cell per step. Also times the set-up of the
 //! added-mass matrix K (three projections).

@@ -1,4 +1,4 @@
-//! The circular cylinder's drag split into pressure and friction (SPEC §5):
+//! The circular cylinder's drag split into pressure and friction (docs/physics.md §5):
 //!
 //! ```text
 //! cargo run --release -p platefall-core --example cylinder_drag -- RE N EXTENT T_END

@@ -1,4 +1,4 @@
-//! The body-fixed stretched Cartesian grid (SPEC §4).
+//! The body-fixed stretched Cartesian grid (docs/physics.md §4).
 //!
 //! The grid's core holds the plate's section ([`Shape`]; chord = 1). Along the chord it spans the
 //! section's extent in cells of at most h = 1/N (N cells for a unit chord). Across it, for a
@@ -7,7 +7,7 @@
 //! centred on the middle of the section's extent, m = ⌈t/2h⌉, so that a symmetric section has a
 //! grid line on its axis and no fluid cell is thinner than h. Outside the core the grid
 //! stretches geometrically outward from each edge with a first interval h: a patch of `n`
-//! intervals covering a length L is the seed's exponential map
+//! intervals covering a length L is the dissertation's exponential map
 //!
 //! ```text
 //!     s(η) = L (e^{Cη} − 1) / (e^{C} − 1),   η = k/n,  k = 0..n,
@@ -40,12 +40,12 @@ pub struct GridSpec {
 pub enum Stretch {
     /// As few intervals as keep the cell growth ratio at or below this cap (e.g. 1.04).
     GrowthCap(f64),
-    /// Exactly this many intervals in x and in y (the seed's style: 24 and 27).
+    /// Exactly this many intervals in x and in y (the dissertation's style: 24 and 27).
     Intervals { nx: usize, ny: usize },
 }
 
 impl GridSpec {
-    /// The grid of the seed (N = 16, one-cell plate, 24 × 27 intervals over 10 chords).
+    /// The dissertation's grid (N = 16, one-cell plate, 24 × 27 intervals over 10 chords).
     pub fn seed() -> Self {
         GridSpec {
             resolution: 16,
@@ -147,7 +147,7 @@ impl GridSpec {
     }
 }
 
-/// Solves `C = n ln(1 + (h/L)(e^C − 1))` for the non-trivial root C > 0 (SPEC §4).
+/// Solves `C = n ln(1 + (h/L)(e^C − 1))` for the non-trivial root C > 0 (docs/physics.md §4).
 ///
 /// A root exists exactly when the patch must stretch, i.e. when `n h < L`. Bracketed bisection to
 /// machine precision (the function is concave in C, so the bracket is found by doubling).
@@ -201,7 +201,7 @@ fn core_cells(w: f64, h: f64, fitted: bool) -> usize {
     }
 }
 
-/// Offsets 0 = s₀ < s₁ < … < s_n = L of a stretched patch with first interval h (SPEC §4).
+/// Offsets 0 = s₀ < s₁ < … < s_n = L of a stretched patch with first interval h (docs/physics.md §4).
 pub fn stretched_offsets(h: f64, length: f64, n: usize) -> Vec<f64> {
     match stretch_coefficient(h, length, n) {
         Some(c) => {
@@ -373,7 +373,7 @@ impl Grid {
     }
 }
 
-/// The body-fixed stretched Cartesian grid (SPEC §4) as plain data: chord units, body axes.
+/// The body-fixed stretched Cartesian grid (docs/physics.md §4) as plain data: chord units, body axes.
 ///
 /// Layout is row-major with x fastest: cell (i, j) has index `i + nx * j`.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,5 +1,5 @@
 //! platefall's physics: a thin plate falling freely through a viscous fluid — 2-D incompressible
-//! Navier–Stokes on a grid fixed to the plate, in the seed's mixed frame (inertial velocity
+//! Navier–Stokes on a grid fixed to the plate, in the dissertation's mixed frame (inertial velocity
 //! components along the body axes), coupled to the plate's 3-degree-of-freedom flight mechanics.
 //!
 //! Describe a run with a [`config::RunBuilder`] (one constructor per case, with the command
@@ -10,7 +10,7 @@
 //! use platefall_core::config::{Plate, RunBuilder};
 //! use platefall_core::sim::{Silent, Simulation};
 //!
-//! // The seed's card released into free fall on a coarse grid, for one convective time.
+//! // The dissertation's card released into free fall on a coarse grid, for one convective time.
 //! let config = RunBuilder::free(Plate::card())
 //!     .resolution(8)
 //!     .develop(0.5)

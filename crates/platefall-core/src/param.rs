@@ -6,7 +6,7 @@ use std::fmt;
 
 use crate::shape::ShapeError;
 
-/// An input quantity of a run (SPEC §2–§6), for error messages.
+/// An input quantity of a run (docs/physics.md §2–§6), for error messages.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Param {
     /// Cells per chord N.
@@ -35,7 +35,7 @@ pub enum Param {
     TEnd,
     /// Time-step ceiling.
     DtMax,
-    /// The seed's rotation rule C_c.
+    /// The dissertation's rotation rule C_c.
     Cc,
     /// Net turns after release that end the run.
     Turns,

@@ -1,4 +1,4 @@
-//! Force and moment magnitudes against potential-flow theory (SPEC §5): in the first step of an
+//! Force and moment magnitudes against potential-flow theory (docs/physics.md §6, "Coupling"): in the first step of an
 //! impulsive start the pressure impulse is pure added mass, F·Δt = −m ΔV and M·Δt = −I_a Δθ̇.
 //! The reference is potential flow around the same plate, the default rectangle 1/64 thick
 //! (the boundary-element solution of `panels`; a plate of no thickness has m = π/4 ρc² normal to

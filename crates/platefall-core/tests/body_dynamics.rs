@@ -1,4 +1,4 @@
-//! Rigid-body dynamics and Adams–Bashforth integrator (SPEC §2, §6, §8).
+//! Rigid-body dynamics and Adams–Bashforth integrator (docs/physics.md §2, §6, §8).
 
 use std::f64::consts::PI;
 
@@ -8,7 +8,7 @@ use platefall_core::body::{
 };
 use platefall_core::config::PhysicalPlate;
 
-/// SPEC §6 table, newest first, as (numerators, denominator).
+/// docs/physics.md §6 table, newest first, as (numerators, denominator).
 const SPEC_TABLE: [(&[f64], f64); 6] = [
     (&[1.0], 1.0),
     (&[3.0, -1.0], 2.0),
@@ -442,7 +442,7 @@ fn derived_speed_path_angle_and_attack_in_all_quadrants() {
         let a = s.angle_of_attack();
         assert!((a - alpha).abs() < 1e-13, "case {i}: α = {a} vs {alpha}");
         assert!(a > -PI && a <= PI, "case {i}");
-        // SPEC §3: the translation part of g in body axes is (V cos α, −V sin α).
+        // docs/physics.md §3: the translation part of g in body axes is (V cos α, −V sin α).
         let (u, w) = (s.frame().u0, s.frame().v0);
         assert!(
             (u - v * a.cos()).abs() < 1e-13 && (w + v * a.sin()).abs() < 1e-13,
@@ -479,7 +479,7 @@ fn explicit_coupling_advice_warns_for_light_plates_only() {
 
 #[test]
 fn card_nondimensional_parameters() {
-    // SPEC §8 quotes Re ≈ 4770, m* ≈ 2.20, I* ≈ 0.183, g* ≈ 0.894, c/U = 0.0833 s: each must agree
+    // docs/physics.md §8 quotes Re ≈ 4770, m* ≈ 2.20, I* ≈ 0.183, g* ≈ 0.894, c/U = 0.0833 s: each must agree
     // to 3 significant figures, i.e. within half a unit of the quoted last digit.
     let card = PhysicalPlate::card();
     let nd = card.nondimensional();
@@ -497,7 +497,7 @@ fn card_nondimensional_parameters() {
         nd.props.gravity
     );
     assert!(close(nd.convective_time_s, 0.0833, 0.00005));
-    // SPEC §8: 23.4 rad/s is θ̇ ≈ 1.95, 19.56 rad/s is θ̇ ≈ 1.63; V = 1 is 3 ft/s.
+    // docs/physics.md §8: 23.4 rad/s is θ̇ ≈ 1.95, 19.56 rad/s is θ̇ ≈ 1.63; V = 1 is 3 ft/s.
     assert!(close(card.rate_to_rad_s(1.95), 23.4, 0.05));
     assert!(close(card.rate_to_rad_s(1.63), 19.56, 0.05));
     assert_eq!(card.speed_to_ft_s(1.0), 3.0);

@@ -679,7 +679,7 @@ fn tumbling_step(body: &mut RigidBody6, t: f64, h: f64) {
 #[test]
 fn a_checkpoint_restores_the_body_bit_for_bit() {
     // 30 steps, a checkpoint through bincode (the checkpoint files' encoding), 40 more steps on
-    // the original and on a fresh body restored from it: identical bits. With the seed's start
+    // the original and on a fresh body restored from it: identical bits. With the dissertation's start
     // (`Extrapolate`, whose invented history the checkpoint must carry) and order 5.
     let plate = Plate6::new(1.5, tilted_inertia(), 0.9, 0.0).unwrap();
     let start = State6 {

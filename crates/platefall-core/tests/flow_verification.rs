@@ -1,4 +1,4 @@
-//! Verification of the mixed-frame Navier–Stokes solver (SPEC §3) against exact solutions:
+//! Verification of the mixed-frame Navier–Stokes solver (docs/physics.md §3) against exact solutions:
 //! a manufactured solution on a stretched grid in a moving, rotating frame (order in space and in
 //! time), rigid rotation with a spinning plate (the θ̇ terms), and discrete incompressibility —
 //! each with today's explicit scheme and with the implicit far field, the latter at a rotation
@@ -43,7 +43,7 @@ impl Mms {
         let (kx, ky) = (a * x + 0.4, b * y - 0.2);
         (g * b * kx.sin() * ky.cos(), -g * a * kx.cos() * ky.sin())
     }
-    /// The body force that makes (u, v, p) an exact solution of SPEC §3's equations.
+    /// The body force that makes (u, v, p) an exact solution of docs/physics.md §3's equations.
     fn force(&self, x: f64, y: f64, t: f64) -> (f64, f64) {
         let (g, gdot) = self.g(t);
         let (a, b) = self.k;

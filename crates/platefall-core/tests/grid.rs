@@ -1,10 +1,10 @@
-//! Grid (SPEC §4): the seed's stretching figures, monotone spacing, growth within the cap.
+//! Grid (docs/physics.md §4): the dissertation's stretching figures, monotone spacing, growth within the cap.
 use platefall_core::grid::{stretch_coefficient, Grid, GridSpec, Stretch};
 use platefall_core::shape::Shape;
 
 #[test]
-fn seed_x_stretching_matches_the_dissertation() {
-    // h = c/16, 24 intervals over 10 c beyond each plate edge: seed C_x = 3.157, outer spacing 1.287 c.
+fn x_stretching_matches_the_dissertation() {
+    // h = c/16, 24 intervals over 10 c beyond each plate edge: the dissertation's C_x = 3.157, outer spacing 1.287 c.
     let c = stretch_coefficient(1.0 / 16.0, 10.0, 24).unwrap();
     assert!((c - 3.157).abs() < 5e-4, "C_x = {c}");
     let g = Grid::new(&GridSpec::seed()).unwrap();
@@ -13,13 +13,13 @@ fn seed_x_stretching_matches_the_dissertation() {
         "outer dx = {}",
         g.outer_spacing().0
     );
-    assert_eq!(g.nx + 1, 65, "seed grid has 65 points along x");
+    assert_eq!(g.nx + 1, 65, "the dissertation's grid has 65 points along x");
 }
 
 #[test]
-fn seed_y_stretching_matches_the_dissertation() {
+fn y_stretching_matches_the_dissertation() {
     // 27 intervals over 10 c above and below: C_y ≈ 2.98, outer spacing ≈ 1.10 c (seed: 2.988, 1.110;
-    // the seed's exact patch length is not given, hence the looser tolerance).
+    // the dissertation's exact patch length is not given, hence the looser tolerance).
     let g = Grid::new(&GridSpec::seed()).unwrap();
     let cy = g.cy.unwrap();
     assert!((cy - 2.98).abs() < 0.01, "C_y = {cy}");

@@ -1,4 +1,4 @@
-//! Strong coupling against potential flow (SPEC §6): a plate released from rest in still fluid
+//! Strong coupling against potential flow (docs/physics.md §6): a plate released from rest in still fluid
 //! first moves as its buoyancy-corrected weight accelerates its own mass plus the fluid's added
 //! mass — π/4 ρc² normal to the plate, 0 along it (potential flow past a plate of zero thickness;
 //! the one-cell plate's own, −K₀₀ ≈ 5e-4 at N = 64, is 1 % of the lightest plate here) — and a

@@ -1,4 +1,4 @@
-//! The wall loads alone against manufactured fields (SPEC §5): pressure and velocity fields
+//! The wall loads alone against manufactured fields (docs/physics.md §5): pressure and velocity fields
 //! given analytically at the grid's own points around an ellipse that cuts the cells, whose
 //! force and moment on the ellipse follow exactly from the divergence theorem. The loads are
 //! second order in the spacing, so their errors must fall by ≥ 2^1.8 per halving of h.

@@ -1,4 +1,4 @@
-//! Derived quantities on the staggered (MAC) grid, and the observer frames of SPEC §7.
+//! Derived quantities on the staggered (MAC) grid, and the observer frames of docs/physics.md §7.
 //!
 //! Index conventions follow [`FieldSnapshot`]: `u` on vertical faces (xn\[i\], yc\[j\]), index
 //! `i + (nx+1) j`; `v` on horizontal faces (xc\[i\], yn\[j\]), index `i + nx j`; nodes (cell
@@ -120,7 +120,7 @@ pub fn stream_function_at_nodes(grid: &GridGeometry, u: &[f64], v: &[f64]) -> Ve
     psi
 }
 
-/// The observer frames of SPEC §7 for streamlines (and the speed image).
+/// The observer frames of docs/physics.md §7 for streamlines (and the speed image).
 ///
 /// Each frame is given by the observer's velocity field w(x) in body axes; streamlines are
 /// drawn for the relative velocity u − w.
@@ -130,7 +130,7 @@ pub enum StreamFrame {
     PlateFixed = 1,
     /// 2: fixed in the fluid far away (inertial): w = 0.
     Inertial = 2,
-    /// 3: translating with the plate's centre but not rotating: w = (u0, v0). The seed's choice
+    /// 3: translating with the plate's centre but not rotating: w = (u0, v0). The dissertation's choice
     /// (like a wind-tunnel photograph of a rotating plate); the default.
     #[default]
     Translating = 3,

@@ -1,4 +1,4 @@
-//! Post-processing (SPEC §7): statistics and the summary of a run's time series, and pictures of
+//! Post-processing (docs/physics.md §7): statistics and the summary of a run's time series, and pictures of
 //! its flow snapshots — vorticity, stream function, streamlines in the four observer frames, and
 //! resampling from the stretched MAC grid onto uniform images.
 //!
@@ -16,7 +16,7 @@
 //! - [`fields`]: the staggered-grid quantities. [`vorticity_at_nodes`] (ω = ∂v/∂x − ∂u/∂y at cell
 //!   corners), [`stream_function_at_nodes`] (ψ with u = ψ_y, v = −ψ_x, integrated from the MAC face
 //!   fluxes: exact for a discretely divergence-free field), and [`StreamFrame`], the observer frames
-//!   of SPEC §7 with the velocity and stream function of each observer.
+//!   of docs/physics.md §7 with the velocity and stream function of each observer.
 //! - [`resample`]: separable bilinear interpolation from a tensor-product (stretched) grid onto a
 //!   uniform image ([`ImageGrid`], [`AxisWeights`]).
 //! - [`contour`]: iso-lines of a scalar on a tensor grid (marching squares, joined into polylines).

@@ -44,7 +44,7 @@ impl Default for PainterOptions {
 pub struct PaintedFields {
     /// Inertial vorticity ω = ∂v/∂x − ∂u/∂y (in any frame rotating at θ̇ it would be ω − 2θ̇).
     pub vorticity: Vec<f32>,
-    /// Pressure (the true pressure p of SPEC §3).
+    /// Pressure (the true pressure p of docs/physics.md §3).
     pub pressure: Vec<f32>,
     /// Speed of the flow relative to the observer frame, |u − w|.
     pub speed: Vec<f32>,

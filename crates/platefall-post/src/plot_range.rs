@@ -1,4 +1,4 @@
-//! The value ranges the viewer's plots open on, known before a run starts (SPEC §7: the plots of
+//! The value ranges the viewer's plots open on, known before a run starts (docs/physics.md §7: the plots of
 //! the coefficients and the motion against time and against α).
 //!
 //! An impulsive start puts a spike of added-mass force into the first steps (C_D ≈ 30–170 for a

@@ -1,4 +1,4 @@
-//! What a falling plate is doing: its motion regime from the pitch angle θ(t) (SPEC §1 case D, §6;
+//! What a falling plate is doing: its motion regime from the pitch angle θ(t) (docs/physics.md §1 case D, §6;
 //! the regimes of falling-plate experiments). Pure functions on a window of samples.
 //!
 //! The rule, over the window (the second half of the time after release, see

@@ -1,12 +1,12 @@
 //! The human-readable end-of-run report: the run's figures and, where the case has one, the
-//! comparison with the seed's reference results (SPEC §8).
+//! comparison with the dissertation's reference results (docs/physics.md §8).
 use std::f64::consts::PI;
 
 use super::regime::Regime;
 use super::summary::Summary;
 use platefall_core::sim::{Case, RunConfig};
 
-/// One row of the comparison table: quantity, this run, seed / experiment.
+/// One row of the comparison table: quantity, this run, dissertation / experiment.
 type Row = (String, String, String);
 
 fn fmt_opt(x: Option<f64>, digits: usize) -> String {
@@ -40,7 +40,7 @@ fn row(quantity: &str, this_run: String, reference: &str) -> Row {
     (quantity.into(), this_run, reference.into())
 }
 
-/// The end-of-run report: the run's figures and the SPEC §8 comparison for its case.
+/// The end-of-run report: the run's figures and the docs/physics.md §8 comparison for its case.
 pub fn report(config: &RunConfig, sum: &Summary) -> String {
     let mut r = header(config, sum);
     let table = match config.case {
@@ -125,16 +125,16 @@ fn static_part(alpha: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
         table.push(row("Strouhal (chord / width)", strouhal, "0.34 / 0.13"));
     }
     if (alpha - PI / 2.0).abs() < 0.05 {
-        let seed = "1.494 (seed, symmetric wake); 1.4 experiment";
+        let reference = "1.494 (dissertation, symmetric wake); 1.4 experiment";
         let cd = pm(sum.mean_cd, sum.ci.mean_cd_ci95, 3);
-        table.push(row("mean C_D", cd, seed));
+        table.push(row("mean C_D", cd, reference));
     }
     if alpha.abs() <= 0.16 {
-        let seed = "≈ 0.44 at α = 0.15";
+        let reference = "≈ 0.44 at α = 0.15";
         table.push(row(
             "C_L (steady up to α ≈ 0.15)",
             pm(sum.mean_cl, sum.ci.mean_cl_ci95, 3),
-            seed,
+            reference,
         ));
     }
     table
@@ -146,12 +146,12 @@ fn forced_part(omega: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
         pm(sum.lag_cd_behind_cl, sum.ci.lag_cd_behind_cl_ci95, 2),
         pm(sum.mean_cm, sum.ci.mean_cm_ci95, 4)
     ));
-    let seed = [
+    let reference = [
         (1.0, "3.2", "1.1", "accelerating"),
         (2.0, "5.8", "1.0", "≈ neutral"),
         (4.0, "9.5", "0.75", "retarding"),
     ];
-    let Some((_, cl, lag, m)) = seed.iter().find(|(k, ..)| (omega.abs() - k).abs() < 1e-9) else {
+    let Some((_, cl, lag, m)) = reference.iter().find(|(k, ..)| (omega.abs() - k).abs() < 1e-9) else {
         return Vec::new();
     };
     let sense = sum.mean_cm.map(|m| {
@@ -208,22 +208,22 @@ fn coupled_part(case: &Case, sum: &Summary, r: &mut String) -> Vec<Row> {
         row(
             "mean speed (ft/s)",
             pm(sum.mean_speed_ft_s, sum.ci.mean_speed_ft_s_ci95, 2),
-            "3.01 (seed), 3.75 (experiment)",
+            "3.01 (dissertation), 3.75 (experiment)",
         ),
         row(
             "mean rotation (rad/s)",
             pm(sum.mean_omega_rad_s, sum.ci.mean_omega_rad_s_ci95, 2),
-            "19.56 (seed), 23.4 (experiment)",
+            "19.56 (dissertation), 23.4 (experiment)",
         ),
         row(
             "mean flight-path angle (rad)",
             pm(sum.mean_gamma, sum.ci.mean_gamma_ci95, 3),
-            "−0.20 (seed), −0.81 (experiment)",
+            "−0.20 (dissertation), −0.81 (experiment)",
         ),
         row(
             "max C_L in autorotation",
             fmt_opt(sum.peak_cl_rotation, 2),
-            "≈ 6.2 (seed)",
+            "≈ 6.2 (dissertation)",
         ),
     ]
 }
@@ -290,9 +290,9 @@ fn comparison_table(table: &[Row]) -> String {
     let w0 = width(|x| &x.0).unwrap_or(0);
     let w1 = width(|x| &x.1).unwrap_or(0).max(9);
     let pad = |s: &str, w: usize| format!("{s}{}", " ".repeat(w - s.chars().count()));
-    let mut r = String::from("\ncomparison with the seed (SPEC §8)\n");
+    let mut r = String::from("\ncomparison with Gallaway (1985) (docs/physics.md §8)\n");
     r.push_str(&format!(
-        "  {}  {}  seed / experiment\n",
+        "  {}  {}  dissertation / experiment\n",
         pad("quantity", w0),
         pad("this run", w1)
     ));

@@ -1,6 +1,6 @@
 //! The run summary: stable JSON keys for scripts, computed from the time series of a run over its
-//! developed part (SPEC §8), with what a falling plate is doing ([`FallKeys`], SPEC §1 case D)
-//! and the results in physical units when the plate has them ([`PhysicalKeys`], SPEC §2).
+//! developed part (docs/physics.md §8), with what a falling plate is doing ([`FallKeys`], docs/physics.md §1 case D)
+//! and the results in physical units when the plate has them ([`PhysicalKeys`], docs/physics.md §2).
 //! Everything is computed from `&[StepSample]` windows.
 use std::f64::consts::PI;
 
@@ -57,7 +57,7 @@ pub struct Summary {
     /// Lag of max C_D behind max C_L in α (rad), averaged over the developed half-turns.
     pub lag_cd_behind_cl: Option<f64>,
     /// Peak lift coefficient in the sense of the rotation (max C_L turning counter-clockwise,
-    /// −min C_L turning clockwise), over the developed part; the seed's "max C_L in autorotation".
+    /// −min C_L turning clockwise), over the developed part; the dissertation's "max C_L in autorotation".
     pub peak_cl_rotation: Option<f64>,
     /// Card preset: the mean speed in the card's feet.
     pub mean_speed_ft_s: Option<f64>,

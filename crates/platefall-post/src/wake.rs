@@ -1,4 +1,4 @@
-//! Pictures of the wake (SPEC §7): the flow over a long window that follows the plate along its
+//! Pictures of the wake (docs/physics.md §7): the flow over a long window that follows the plate along its
 //! path, in the non-rotating frame translating with the plate's centre.
 //!
 //! Vortices shed by the plate stay nearly where they were shed, so the wake lies along the

@@ -1,4 +1,4 @@
-//! Cases B–D (SPEC §1, §6, §8) at the seed's resolution N = 16 around the seed's plate (one cell,
+//! Cases B–D (docs/physics.md §1, §6, §8) at the dissertation's resolution N = 16 around the dissertation's plate (one cell,
 //! 1/16 thick): short CI runs.
 mod common;
 use platefall_core::config::{Plate, RunBuilder};
@@ -42,7 +42,7 @@ fn forced_rotation_lift_is_periodic_at_the_forced_rate() {
 #[test]
 fn pinned_card_reaches_sustained_autorotation() {
     // Released at α₀ = 0.1 after 5 units of development; θ must pass 4π and the mean rate over the
-    // whole turns after the first must lie in [1.0, 2.5] (seed 1.58).
+    // whole turns after the first must lie in [1.0, 2.5] (dissertation 1.58).
     let config = RunBuilder::pinned(Plate::card())
         .resolution(16)
         .thickness(0.0625)

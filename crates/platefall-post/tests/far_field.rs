@@ -1,4 +1,4 @@
-//! The implicit far field (SPEC §3; docs/how-it-works.md, "Far field"): a Lamb–Oseen vortex carried
+//! The implicit far field (docs/physics.md §3; docs/how-it-works.md, "Far field"): a Lamb–Oseen vortex carried
 //! through the far field of a spinning grid against the exact viscous solution, and Δt control that
 //! no longer depends on the extent of the grid.
 use std::f64::consts::PI;
@@ -132,7 +132,7 @@ fn half_a_turn(dt: f64) -> (f64, f64, u64, f64) {
 fn a_lamb_oseen_vortex_crosses_the_far_field_of_a_spinning_grid() {
     // Relative to the grid the vortex sweeps 25 chords at 16 c/U: through the split columns
     // (fine rows at the plate's level), the corners and the split rows (fine columns over the
-    // chord), ending on the other side. At the seed's rotation rule (Δt = 0.0025, twice the
+    // chord), ending on the other side. At the dissertation's rotation rule (Δt = 0.0025, twice the
     // explicit limit on this grid) and at 4× that step (8× the explicit limit).
     //
     // Tolerances: the centroid within 0.05 c of the exact (inertially fixed) centre, a fifth of
@@ -215,7 +215,7 @@ fn steps_per_turn(rec: &RunRecord) -> f64 {
 #[test]
 fn the_card_at_n32_autorotates_as_with_the_explicit_far_field() {
     let rec = card_agrees_with_the_explicit_scheme(32, EXPLICIT_N32);
-    // The seed's rotation rule alone needs 2π/0.005 = 1257 steps per turn; the explicit far
+    // The dissertation's rotation rule alone needs 2π/0.005 = 1257 steps per turn; the explicit far
     // field took 6,190 here.
     let spt = steps_per_turn(&rec);
     eprintln!("N = 32: {spt:.0} steps per turn");

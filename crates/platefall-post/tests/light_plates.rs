@@ -1,4 +1,4 @@
-//! Light plates under strong coupling (SPEC §6): stable where explicit coupling diverges, at the
+//! Light plates under strong coupling (docs/physics.md §6): stable where explicit coupling diverges, at the
 //! time step of a heavy plate, and heavy plates unchanged. CI-sized: N = 16 (docs/verification.md
 //! gives the same at N = 32: `cargo test --release -p platefall-post --test light_plates --
 //! --ignored`).

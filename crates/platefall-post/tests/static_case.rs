@@ -1,4 +1,4 @@
-//! Case A, the static plate (SPEC §1, §5, §8) at the seed's resolution N = 16 around the seed's plate
+//! Case A, the static plate (docs/physics.md §1, §5, §8) at the dissertation's resolution N = 16 around the dissertation's plate
 //! (a rectangle 1/16 thick), Re = 5000.
 mod common;
 use platefall_core::config::RunBuilder;
@@ -6,7 +6,7 @@ use platefall_core::sim::RunStatus;
 
 #[test]
 fn normal_plate_sheds_an_asymmetric_wake() {
-    // α = π/2: the seed's solver kept a symmetric wake (C_D 1.494, no street). Here the wake must
+    // α = π/2: the dissertation's solver kept a symmetric wake (C_D 1.494, no street). Here the wake must
     // break symmetry and shed: C_L oscillates with amplitude > 0.1 over the developed part.
     let config = RunBuilder::static_plate(std::f64::consts::FRAC_PI_2)
         .resolution(16)
@@ -27,7 +27,7 @@ fn normal_plate_sheds_an_asymmetric_wake() {
         s.strouhal_chord.is_some(),
         "a shedding wake has a dominant lift frequency"
     );
-    // A shedding wake drags harder than the seed's symmetric one (1.494; a symmetric wake here
+    // A shedding wake drags harder than the dissertation's symmetric one (1.494; a symmetric wake here
     // decays below 1.0 by t = 10); 2-D computations of shedding normal plates give ≈ 2.6 at
     // Re 250 (Najjar & Vanka 1995) and more at higher Re, and this solver gives 3.3–3.8 at
     // N = 16–64; [1.5, 4.5] separates shedding from both a symmetric and a blown-up wake.
@@ -38,7 +38,7 @@ fn normal_plate_sheds_an_asymmetric_wake() {
 #[test]
 fn inclined_plate_sheds_at_the_expected_strouhal_number() {
     // α = 0.4: periodic shedding with a Strouhal number on the projected width c sin α in
-    // [0.12, 0.20] (seed 0.13; bluff-body wakes 0.14–0.18).
+    // [0.12, 0.20] (dissertation 0.13; bluff-body wakes 0.14–0.18).
     let config = RunBuilder::static_plate(0.4).resolution(16).t_end(40.0);
     let (_, rec, s) = common::run(config.build().unwrap());
     assert_eq!(rec.status, RunStatus::Completed);
@@ -47,7 +47,7 @@ fn inclined_plate_sheds_at_the_expected_strouhal_number() {
         (0.12..=0.20).contains(&st),
         "Strouhal on the projected width {st}"
     );
-    // Lift is positive for positive α (SPEC §5: motion to the right, lift up).
+    // Lift is positive for positive α (docs/physics.md §5: motion to the right, lift up).
     assert!(s.mean_cl.unwrap() > 0.3 && s.mean_cd.unwrap() > 0.0);
 }
 

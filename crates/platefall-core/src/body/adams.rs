@@ -1,4 +1,4 @@
-//! Variable-step Adams–Bashforth integrator of orders 1..=6 (SPEC §6, "Time integration").
+//! Variable-step Adams–Bashforth integrator of orders 1..=6 (docs/physics.md §6, "Time integration").
 //!
 //! For y' = f(t, y), the step t_n → t_n + h is
 //!
@@ -9,13 +9,13 @@
 //!
 //! where ℓ_j is the Lagrange basis polynomial through the stored derivative times
 //! t_n, t_{n-1}, …, t_{n-k+1} (ℓ_j(t_{n-i}) = δ_ij). This is the exact variable-step
-//! generalisation of the constant-step table of SPEC §6, to which it reduces when the steps are equal.
+//! generalisation of the constant-step table of docs/physics.md §6, to which it reduces when the steps are equal.
 //! The derivative comes from a CFD solve, so the caller evaluates it exactly once per step and hands
 //! it to [`AdamsBashforth::step`]; the integrator only stores it.
 
 use thiserror::Error;
 
-/// Highest supported order (SPEC §6 table: orders 1–6); also the ring-buffer capacity.
+/// Highest supported order (docs/physics.md §6 table: orders 1–6); also the ring-buffer capacity.
 pub const MAX_ORDER: usize = 6;
 
 /// 4-point Gauss–Legendre rule on [−1, 1] (nodes, weights). Exact for polynomials of degree ≤ 7,
@@ -34,7 +34,8 @@ pub enum AbStart {
     /// Use order min(k, number of stored derivatives): the order rises 1, 2, …, k over the first
     /// k steps, using only true derivatives.
     Ramp,
-    /// The seed's start (SPEC §6, "extrapolating the initial state linearly backwards in time"):
+    /// The dissertation's start (docs/physics.md §6, "Time integration": the initial state extrapolated
+    /// along a straight line to earlier times):
     /// before a step, missing older history is invented at spacing h (the current step) backwards
     /// from the oldest stored entry, assuming the derivative is a linear function of time.
     /// With two or more stored derivatives the line through the two oldest is continued backwards;
@@ -63,7 +64,7 @@ pub enum AbError {
     HistoryShape,
 }
 
-/// Variable-step Adams–Bashforth coefficients β_j (SPEC §6, exact variable-step generalisation of
+/// Variable-step Adams–Bashforth coefficients β_j (docs/physics.md §6, exact variable-step generalisation of
 /// the table): `times[j]` = t_{n−j}, newest first (`times[0]` = t_n), k = `times.len()` in 1..=6,
 /// for the step t_n → t_n + h. Entries j ≥ k of the result are zero.
 ///
@@ -112,7 +113,7 @@ pub struct AbHistory {
     pub len: usize,
 }
 
-/// Adams–Bashforth integrator of order k ∈ 1..=6 for an N-component state (SPEC §6), with a
+/// Adams–Bashforth integrator of order k ∈ 1..=6 for an N-component state (docs/physics.md §6), with a
 /// fixed-capacity ring buffer of past derivatives (no allocation per step). The coupled solver uses
 /// N = 6: (X, Y, θ, Ẋ, Ẏ, θ̇).
 #[derive(Debug, Clone)]
@@ -127,7 +128,7 @@ pub struct AdamsBashforth<const N: usize> {
 }
 
 impl<const N: usize> AdamsBashforth<N> {
-    /// A new integrator of the given order (1..=6, SPEC §6 table) with an empty history.
+    /// A new integrator of the given order (1..=6, docs/physics.md §6 table) with an empty history.
     pub fn new(order: usize, start: AbStart) -> Result<Self, AbError> {
         if !(1..=MAX_ORDER).contains(&order) {
             return Err(AbError::Order(order));
@@ -205,7 +206,7 @@ impl<const N: usize> AdamsBashforth<N> {
         Ok(())
     }
 
-    /// One Adams–Bashforth step t → t + h (SPEC §6): pushes (t, f_now) into the history, then
+    /// One Adams–Bashforth step t → t + h (docs/physics.md §6): pushes (t, f_now) into the history, then
     /// advances `y` in place with the variable-step coefficients of [`ab_weights`] over the newest
     /// k′ stored derivatives (k′ = [`next_order`](Self::next_order) before the call).
     ///

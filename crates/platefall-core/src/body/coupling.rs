@@ -1,5 +1,5 @@
-//! Added-mass stability advisory for explicit fluid–body coupling (SPEC §6, "Explicit coupling can
-//! go unstable for light plates (added mass)"). The default strong coupling
+//! Added-mass stability advisory for explicit fluid–body coupling (docs/physics.md §6, "Coupling":
+//! explicit coupling fails for light plates). The default strong coupling
 //! ([`StrongCoupling`](super::StrongCoupling)) has no such limit; this advice is for runs that
 //! choose the explicit one.
 //!

@@ -1,4 +1,4 @@
-//! Rigid-body flight mechanics of the plate (SPEC §6): the Cartesian equations of motion, the
+//! Rigid-body flight mechanics of the plate (docs/physics.md §6): the Cartesian equations of motion, the
 //! variable-step Adams–Bashforth integrator, the strong (added-mass implicit) coupling and the
 //! advisory for explicit coupling; [`six`]: the six-degree-of-freedom body of the 3-D flight.
 

@@ -1,16 +1,16 @@
-//! Rigid-body motion of the plate in Cartesian inertial form (SPEC §6), non-dimensional (SPEC §2).
+//! Rigid-body motion of the plate in Cartesian inertial form (docs/physics.md §6), non-dimensional (docs/physics.md §2).
 //!
-//! Inertial frame (SPEC §3): X right, Y up, gravity −Y, θ counter-clockwise. The equations are
+//! Inertial frame (docs/physics.md §3): X right, Y up, gravity −Y, θ counter-clockwise. The equations are
 //! m* Ẍ = F_X, m* Ÿ = F_Y − m* g*, I* θ̈ = M, with (F_X, F_Y) in inertial axes, which stay regular
-//! at V = 0 (unlike the seed's wind-axis form); V, γ, α are derived quantities.
+//! at V = 0 (unlike the dissertation's wind-axis form); V, γ, α are derived quantities.
 
 use std::f64::consts::PI;
 
 use super::adams::{AbError, AbHistory, AbStart, AdamsBashforth};
 use crate::flow::Frame;
 
-/// Non-dimensional plate properties (SPEC §2): m* = m/(ρc²b), I* = I/(ρc⁴b), g* = g c/U², the
-/// displaced fluid mass m_f* (buoyancy, SPEC §2: the weight is g (ρs − ρf) t c per span) and an
+/// Non-dimensional plate properties (docs/physics.md §2): m* = m/(ρc²b), I* = I/(ρc⁴b), g* = g c/U², the
+/// displaced fluid mass m_f* (buoyancy, docs/physics.md §2: the weight is g (ρs − ρf) t c per span) and an
 /// applied moment.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PlateProps {
@@ -53,7 +53,7 @@ impl PlateProps {
     }
 }
 
-/// Rigid-body state in the inertial frame (SPEC §3, §6): centre (X, Y), pitch θ and their rates.
+/// Rigid-body state in the inertial frame (docs/physics.md §3, §6): centre (X, Y), pitch θ and their rates.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct BodyState {
     /// X of the centre.
@@ -70,7 +70,7 @@ pub struct BodyState {
     pub omega: f64,
 }
 
-/// Which degrees of freedom the body equations move (SPEC §1, cases A–D).
+/// Which degrees of freedom the body equations move (docs/physics.md §1, cases A–D).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Dof {
     /// Cases A, B: the caller imposes the motion; [`advance`] leaves the state untouched.
@@ -81,7 +81,7 @@ pub enum Dof {
     Free,
 }
 
-/// Fluid load per unit span on the plate (SPEC §5): force (F_X, F_Y) in INERTIAL axes and moment M
+/// Fluid load per unit span on the plate (docs/physics.md §5): force (F_X, F_Y) in INERTIAL axes and moment M
 /// about the centre (counter-clockwise positive), non-dimensional by ρU²c and ρU²c².
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct InertialLoads {
@@ -95,20 +95,20 @@ pub struct InertialLoads {
 
 impl InertialLoads {
     /// InertialLoads from a force given in BODY axes (x along the chord), rotated to inertial axes by θ
-    /// (SPEC §3: X = R(θ) x).
+    /// (docs/physics.md §3: X = R(θ) x).
     pub fn from_body_axes(theta: f64, fx_body: f64, fy_body: f64, moment: f64) -> Self {
         let (fx, fy) = body_to_inertial(theta, fx_body, fy_body);
         Self { fx, fy, moment }
     }
 }
 
-/// Rotate a body-axes vector (x along the chord) to inertial axes: R(θ)(a, b) (SPEC §3).
+/// Rotate a body-axes vector (x along the chord) to inertial axes: R(θ)(a, b) (docs/physics.md §3).
 pub fn body_to_inertial(theta: f64, a: f64, b: f64) -> (f64, f64) {
     let (s, c) = theta.sin_cos();
     (c * a - s * b, s * a + c * b)
 }
 
-/// Rotate an inertial vector to body axes: Rᵀ(θ)(A, B) (SPEC §3, u = Rᵀ U).
+/// Rotate an inertial vector to body axes: Rᵀ(θ)(A, B) (docs/physics.md §3, u = Rᵀ U).
 pub fn inertial_to_body(theta: f64, a: f64, b: f64) -> (f64, f64) {
     let (s, c) = theta.sin_cos();
     (c * a + s * b, -s * a + c * b)
@@ -143,22 +143,22 @@ impl BodyState {
         }
     }
 
-    /// Speed V = |(Ẋ, Ẏ)| (SPEC §6).
+    /// Speed V = |(Ẋ, Ẏ)| (docs/physics.md §6).
     pub fn speed(&self) -> f64 {
         self.xdot.hypot(self.ydot)
     }
 
-    /// Flight-path angle γ = atan2(Ẏ, Ẋ) ∈ [−π, π] (SPEC §3, §6); 0 when V = 0.
+    /// Flight-path angle γ = atan2(Ẏ, Ẋ) ∈ [−π, π] (docs/physics.md §3, §6); 0 when V = 0.
     pub fn flight_path_angle(&self) -> f64 {
         self.ydot.atan2(self.xdot)
     }
 
-    /// Angle of attack α = θ − γ wrapped into (−π, π] (SPEC §5, §6).
+    /// Angle of attack α = θ − γ wrapped into (−π, π] (docs/physics.md §5, §6).
     pub fn angle_of_attack(&self) -> f64 {
         wrap_angle(self.theta - self.flight_path_angle())
     }
 
-    /// The motion as the flow solver sees it (SPEC §3): the centre's velocity along the body axes,
+    /// The motion as the flow solver sees it (docs/physics.md §3): the centre's velocity along the body axes,
     /// (ẋ₀cosθ + ẏ₀sinθ, −ẋ₀sinθ + ẏ₀cosθ) = (V cos α, −V sin α), and θ̇.
     pub fn frame(&self) -> Frame {
         let (u0, v0) = inertial_to_body(self.theta, self.xdot, self.ydot);
@@ -170,7 +170,7 @@ impl BodyState {
     }
 }
 
-/// Time derivative of (X, Y, θ, Ẋ, Ẏ, θ̇) under the Cartesian equations of SPEC §6 with the loads
+/// Time derivative of (X, Y, θ, Ẋ, Ẏ, θ̇) under the Cartesian equations of docs/physics.md §6 with the loads
 /// taken as given (explicit coupling), T the applied moment and g*(1 − m_f*/m*) the buoyancy-
 /// corrected gravity: `Free`: (Ẋ, Ẏ, θ̇, F_X/m*, F_Y/m* − g*(1 − m_f*/m*), (M + T)/I*);
 /// `PitchOnly`: (Ẋ, Ẏ, θ̇, 0, 0, (M + T)/I*); `Prescribed`: (Ẋ, Ẏ, θ̇, 0, 0, 0) (constant velocity;
@@ -194,7 +194,7 @@ pub fn state_derivative(
     [s.xdot, s.ydot, s.omega, ax, ay, alpha]
 }
 
-/// One explicit coupling step t → t + h of the body (SPEC §6 coupling): with the loads of the
+/// One explicit coupling step t → t + h of the body (docs/physics.md §6 coupling): with the loads of the
 /// current flow, the derivative of [`state_derivative`] goes to the Adams–Bashforth integrator,
 /// which advances `state`. For `Dof::Prescribed` nothing happens (the integrator is not fed).
 pub fn advance(
@@ -227,7 +227,7 @@ pub struct RigidBody {
 }
 
 impl RigidBody {
-    /// A body with the given properties, freedom, initial state and AB order/start (SPEC §6).
+    /// A body with the given properties, freedom, initial state and AB order/start (docs/physics.md §6).
     pub fn new(
         props: PlateProps,
         dof: Dof,

@@ -1,5 +1,5 @@
-//! Strong fluid–body coupling (SPEC §6: "coupling that treats the added-mass part of the fluid
-//! force implicitly").
+//! Strong fluid–body coupling (docs/physics.md §6, "Coupling"): the added-mass part of the fluid's
+//! response is treated implicitly.
 //!
 //! The flow's loads after a step contain its instantaneous answer to the change of motion that
 //! step imposed, K·Δq/Δt ([`AddedMass`]: K is the discrete flow's own, negative, added-mass matrix
@@ -27,11 +27,11 @@
 use super::rigid::{body_to_inertial, inertial_to_body, BodyState, Dof, PlateProps};
 use crate::flow::AddedMass;
 
-/// Which coupling of flow and body a run uses (SPEC §6).
+/// Which coupling of flow and body a run uses (docs/physics.md §6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Coupling {
-    /// The loads of the current flow are taken as given (the seed's; diverges for light plates).
+    /// The loads of the current flow are taken as given (the dissertation's; diverges for light plates).
     Explicit,
     /// The flow's instantaneous added-mass answer is moved to the left-hand side ([`StrongCoupling`]).
     #[default]

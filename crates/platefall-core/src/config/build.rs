@@ -1,4 +1,4 @@
-//! Runs built by the library: one constructor per case (SPEC §1), options as builder methods, and
+//! Runs built by the library: one constructor per case (docs/physics.md §1), options as builder methods, and
 //! [`RunBuilder::build`] validating everything into the [`ValidatedConfig`] that
 //! [`Simulation::new`](crate::sim::Simulation::new) takes. The defaults are the command line's
 //! (the CLI shows the constants of [`defaults`] in its help), so a builder with no options runs
@@ -43,9 +43,9 @@ pub mod defaults {
     pub const GROWTH: f64 = 1.045;
     /// Courant number of the convective limit.
     pub const CFL: f64 = 0.5;
-    /// Time-step ceiling (the seed's).
+    /// Time-step ceiling (the dissertation's).
     pub const DT_MAX: f64 = 0.01;
-    /// The seed's rotation rule Δt·|θ̇| ≤ C_c.
+    /// The dissertation's rotation rule Δt·|θ̇| ≤ C_c.
     pub const CC: f64 = 0.005;
     /// Near-field half-width and half-height (chords).
     pub const NEAR: f64 = crate::flow::NEAR_DEFAULT;
@@ -94,7 +94,7 @@ enum GridChoice {
         extent: f64,
         growth: f64,
     },
-    /// The seed's exact grid and plate ([`GridSpec::seed`]).
+    /// The dissertation's exact grid and plate ([`GridSpec::seed`]).
     Seed,
 }
 
@@ -505,7 +505,7 @@ impl<C> RunBuilder<C> {
         self
     }
 
-    /// The seed's exact grid and plate (N = 16, a rectangle 1/16 thick, 24 × 27 stretched
+    /// The dissertation's exact grid and plate (N = 16, a rectangle 1/16 thick, 24 × 27 stretched
     /// intervals over 10 chords), instead of the resolution, section, extent and growth cap.
     pub fn seed_grid(mut self) -> Self {
         self.options.grid = GridChoice::Seed;
@@ -530,7 +530,7 @@ impl<C> RunBuilder<C> {
         self
     }
 
-    /// The seed's rotation rule Δt·|θ̇| ≤ C_c [default: 0.005].
+    /// The dissertation's rotation rule Δt·|θ̇| ≤ C_c [default: 0.005].
     pub fn cc(mut self, cc: f64) -> Self {
         self.options.cc = cc;
         self
@@ -585,7 +585,7 @@ impl Options {
             thickness,
         );
         config.time.average_from_turn = body.average_from_turn;
-        // A physical plate's mass, buoyancy and inertia are those of its section (the seed's grid
+        // A physical plate's mass, buoyancy and inertia are those of its section (the dissertation's grid
         // keeps the plate's own rectangle).
         let strip = body.plate.physical_strip().filter(|_| modern);
         if let (Some(strip), Some(b)) = (strip, config.body.as_mut()) {

@@ -1,4 +1,4 @@
-//! Named fluids for physical plates (SPEC §2: Re = U c/ν needs the fluid's kinematic viscosity, the
+//! Named fluids for physical plates (docs/physics.md §2: Re = U c/ν needs the fluid's kinematic viscosity, the
 //! weight needs its density). Values at 20 °C and atmospheric pressure; every one can be overridden.
 
 /// A fluid: density and kinematic viscosity in SI units, and where the numbers come from.

@@ -1,7 +1,7 @@
-//! The run description above the physics: where a run's numbers come from (SPEC §2, §8) and the
+//! The run description above the physics: where a run's numbers come from (docs/physics.md §2, §8) and the
 //! constructors that describe each case. [`RunBuilder`] fills in a
 //! [`crate::sim::RunConfig`] for each case with the command line's defaults and
-//! validates it; this layer also holds the seed's card ([`PhysicalPlate`]), plates described
+//! validates it; this layer also holds the dissertation's card ([`PhysicalPlate`]), plates described
 //! physically ([`Strip`]) in named fluids ([`Fluid`]), the plate of a coupled run ([`Plate`]),
 //! and the conversion of results back to physical units ([`Units`]).
 mod build;
@@ -20,7 +20,7 @@ pub use units::Units;
 
 use crate::sim::{PlateSource, RunConfig};
 
-/// The seed's card behind a run, when it uses the card preset (for its feet-based report keys).
+/// The dissertation's card behind a run, when it uses the card preset (for its feet-based report keys).
 pub fn physical(config: &RunConfig) -> Option<PhysicalPlate> {
     match config.body.as_ref()?.source {
         PlateSource::Card => Some(PhysicalPlate::card()),

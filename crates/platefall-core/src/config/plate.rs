@@ -1,4 +1,4 @@
-//! The plate of a coupled run (pinned, free): its non-dimensional properties (SPEC §2), where they
+//! The plate of a coupled run (pinned, free): its non-dimensional properties (docs/physics.md §2), where they
 //! come from, and what else they imply for the run: a Reynolds number, physical scales for
 //! reports and, for a plate described physically, the strip itself (its thickness in chords, and
 //! its mass and inertia for any section).
@@ -13,7 +13,7 @@ use crate::sim::{PlateSource, ReferenceScales};
 ///
 /// ```
 /// use platefall_core::config::{Fluid, Plate, Strip};
-/// // The seed's card, 20 % heavier.
+/// // The dissertation's card, 20 % heavier.
 /// let card = Plate::card().mass(1.2 * Plate::card().props().mass);
 /// // A 10 × 0.5 mm aluminium strip in water.
 /// let strip = Plate::strip(&Strip {
@@ -36,7 +36,7 @@ pub struct Plate {
 }
 
 impl Plate {
-    /// The seed's card in sea-level air (SPEC §8): m* ≈ 2.20, I* ≈ 0.183, g* ≈ 0.894 with the
+    /// The dissertation's card in sea-level air (docs/physics.md §8): m* ≈ 2.20, I* ≈ 0.183, g* ≈ 0.894 with the
     /// apparent weight (m_f* = 0), Re ≈ 4770, and the card's scales for reports in feet.
     pub fn card() -> Plate {
         let card = PhysicalPlate::card();

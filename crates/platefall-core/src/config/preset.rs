@@ -1,7 +1,7 @@
-//! The seed's card (SPEC §8, seed Table I) in physical units, and its non-dimensional parameters
-//! (SPEC §2). Units are the seed's: ft, lbf, slug, s.
+//! The dissertation's card (docs/physics.md §8, dissertation Table I) in physical units, and its non-dimensional parameters
+//! (docs/physics.md §2). Units are the dissertation's: ft, lbf, slug, s.
 //!
-//! The card keeps the seed's scale, U = 3 ft/s (its launch speed), and the seed's weight, which is
+//! The card keeps the dissertation's scale, U = 3 ft/s (its launch speed), and the dissertation's weight, which is
 //! taken as the apparent (buoyancy-corrected) weight in air: m_f* = 0, so W = m* g* exactly as before.
 //! (Air's buoyancy on a card about 0.3 mm thick, ρ_air/ρ_card ≈ 0.002, is about 0.2 % of its
 //! weight.)
@@ -12,7 +12,7 @@ use crate::sim::ReferenceScales;
 /// Metres per foot.
 pub const FOOT_M: f64 = 0.3048;
 
-/// A physical plate in a physical fluid (SPEC §2, §8), feet–slug–second units.
+/// A physical plate in a physical fluid (docs/physics.md §2, §8), feet–slug–second units.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct PhysicalPlate {
     /// Chord c (ft).
@@ -33,7 +33,7 @@ pub struct PhysicalPlate {
     pub gravity_ft_s2: f64,
 }
 
-/// The non-dimensional parameters of a run (SPEC §2) and the time unit.
+/// The non-dimensional parameters of a run (docs/physics.md §2) and the time unit.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct NonDimensional {
     /// Re = U c / ν.
@@ -45,7 +45,7 @@ pub struct NonDimensional {
 }
 
 impl PhysicalPlate {
-    /// The seed's card (SPEC §8): chord 3 in, span 8 in, 7.02e-3 lbf, 1.13e-6 slug·ft², sea-level
+    /// The dissertation's card (docs/physics.md §8): chord 3 in, span 8 in, 7.02e-3 lbf, 1.13e-6 slug·ft², sea-level
     /// air (ρ = 0.0023769 slug/ft³, ν = 1.5723e-4 ft²/s), U = 3 ft/s, g = 32.174 ft/s².
     pub fn card() -> Self {
         Self {
@@ -65,27 +65,27 @@ impl PhysicalPlate {
         self.weight_lbf / self.gravity_ft_s2
     }
 
-    /// Re = U c / ν (SPEC §2).
+    /// Re = U c / ν (docs/physics.md §2).
     pub fn reynolds(&self) -> f64 {
         self.speed_ft_s * self.chord_ft / self.viscosity_ft2_s
     }
 
-    /// m* = m / (ρ c² b) (SPEC §2).
+    /// m* = m / (ρ c² b) (docs/physics.md §2).
     pub fn mass_ratio(&self) -> f64 {
         self.mass_slug() / (self.density_slug_ft3 * self.chord_ft.powi(2) * self.span_ft)
     }
 
-    /// I* = I / (ρ c⁴ b) (SPEC §2).
+    /// I* = I / (ρ c⁴ b) (docs/physics.md §2).
     pub fn inertia_ratio(&self) -> f64 {
         self.inertia_slug_ft2 / (self.density_slug_ft3 * self.chord_ft.powi(4) * self.span_ft)
     }
 
-    /// g* = g c / U² (SPEC §2).
+    /// g* = g c / U² (docs/physics.md §2).
     pub fn gravity_ratio(&self) -> f64 {
         self.gravity_ft_s2 * self.chord_ft / self.speed_ft_s.powi(2)
     }
 
-    /// Convective time c/U (s), the unit of non-dimensional time (SPEC §2).
+    /// Convective time c/U (s), the unit of non-dimensional time (docs/physics.md §2).
     pub fn convective_time_s(&self) -> f64 {
         self.chord_ft / self.speed_ft_s
     }

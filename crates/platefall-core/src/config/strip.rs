@@ -1,8 +1,8 @@
-//! A plate described physically (SPEC §2): a strip of width c, thickness t and density ρs in a
+//! A plate described physically (docs/physics.md §2): a strip of width c, thickness t and density ρs in a
 //! fluid of density ρf and kinematic viscosity ν, under gravity g, released from rest. SI units
 //! inside; the command line takes millimetres.
 //!
-//! The velocity scale does not depend on the launch (SPEC §2):
+//! The velocity scale does not depend on the launch (docs/physics.md §2):
 //!
 //! ```text
 //!     U = √(|ρs/ρf − 1| g t)        (U = √(g t) for a neutrally buoyant plate)

@@ -1,4 +1,4 @@
-//! Physical units for reports (SPEC §2): the run's non-dimensional results times its chord c and
+//! Physical units for reports (docs/physics.md §2): the run's non-dimensional results times its chord c and
 //! velocity scale U. Known for physical plates ([`Strip`](super::Strip)) and the card preset.
 use crate::sim::{ReferenceScales, RunConfig};
 

@@ -1,4 +1,4 @@
-//! The discrete flow's instantaneous pressure response to a change of the plate's motion (SPEC §6,
+//! The discrete flow's instantaneous pressure response to a change of the plate's motion (docs/physics.md §6,
 //! "coupling that treats the added-mass part of the fluid force implicitly").
 //!
 //! One step t → t + Δt predicts u* = uⁿ + Δt·H and sets the plate faces to g(qⁿ⁺¹), with

@@ -1,4 +1,4 @@
-//! Phase 2 of a step with the implicit far field (SPEC §3; the scheme is described in
+//! Phase 2 of a step with the implicit far field (docs/physics.md §3; the scheme is described in
 //! `implicit/mod.rs`): the right-hand side, the boundary values at n+1, the row and column
 //! sweeps, the plate's faces, and the projection with the incremental pressure.
 use super::boundary::Outflow;

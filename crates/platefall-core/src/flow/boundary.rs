@@ -1,4 +1,4 @@
-//! Outer boundary conditions (SPEC §3, "Far field").
+//! Outer boundary conditions (docs/physics.md §3, "Far field").
 //!
 //! [`OuterBc::FarField`]: the fluid is at rest in the inertial frame far away. Where fluid enters the
 //! domain relative to the moving grid ((u − g)·n < 0 on the boundary) the velocity is zero; where it

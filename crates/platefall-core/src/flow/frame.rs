@@ -1,8 +1,8 @@
-//! The plate's motion as the flow solver sees it (SPEC §3): the centre's velocity along the body
+//! The plate's motion as the flow solver sees it (docs/physics.md §3): the centre's velocity along the body
 //! axes and the pitch rate, which give the grid-point velocity g.
 
 /// The plate's motion in body axes: the inertial velocity of the centre expressed along the body
-/// axes, (u0, v0) = (ẋ₀cosθ + ẏ₀sinθ, −ẋ₀sinθ + ẏ₀cosθ), and the pitch rate θ̇ (SPEC §3).
+/// axes, (u0, v0) = (ẋ₀cosθ + ẏ₀sinθ, −ẋ₀sinθ + ẏ₀cosθ), and the pitch rate θ̇ (docs/physics.md §3).
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Frame {
     /// Velocity of the plate centre along the body x axis.
@@ -14,12 +14,12 @@ pub struct Frame {
 }
 
 impl Frame {
-    /// Grid-point velocity x-component at height y: g_x = u0 − θ̇ y (SPEC §3).
+    /// Grid-point velocity x-component at height y: g_x = u0 − θ̇ y (docs/physics.md §3).
     #[inline(always)]
     pub fn gx(&self, y: f64) -> f64 {
         self.u0 - self.omega * y
     }
-    /// Grid-point velocity y-component at abscissa x: g_y = v0 + θ̇ x (SPEC §3).
+    /// Grid-point velocity y-component at abscissa x: g_y = v0 + θ̇ x (docs/physics.md §3).
     #[inline(always)]
     pub fn gy(&self, x: f64) -> f64 {
         self.v0 + self.omega * x

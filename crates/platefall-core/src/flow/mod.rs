@@ -1,4 +1,4 @@
-//! Incompressible Navier–Stokes in the mixed frame on the body-fixed grid (SPEC §3).
+//! Incompressible Navier–Stokes in the mixed frame on the body-fixed grid (docs/physics.md §3).
 //!
 //! Unknowns are the inertial velocity components along the body axes on a staggered (MAC) grid.
 //! One step from tⁿ to tⁿ⁺¹ = tⁿ + Δt is split into two calls:
@@ -64,7 +64,7 @@ use zones::Zones;
 use crate::grid::Grid;
 use crate::param::{check_range, InputError, Param};
 
-/// How the transport by the grid velocity is stepped away from the plate (SPEC §3).
+/// How the transport by the grid velocity is stepped away from the plate (docs/physics.md §3).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum FarFieldScheme {
@@ -433,7 +433,7 @@ impl FlowSolver {
         self.loads
     }
 
-    /// C_L, C_D, C_M at the current time level (SPEC §5).
+    /// C_L, C_D, C_M at the current time level (docs/physics.md §5).
     pub fn coefficients(&self) -> (f64, f64, f64) {
         plate::coefficients(&self.loads, &self.frame)
     }
@@ -536,7 +536,7 @@ impl FlowSolver {
 /// The split lines and the implicit workspaces for the far-field scheme of `params` (none for
 /// the explicit scheme); the split lines must not cross the plate.
 /// The explicit viscous limit of the flow step, `visc_safety / (4ν (1/Δx² + 1/Δy²))` on the
-/// smallest cells (SPEC §6 "Time step").
+/// smallest cells (docs/physics.md §6 "Time step").
 pub fn viscous_dt_limit(grid: &Grid, params: &FlowParams) -> f64 {
     let min = |v: &[f64]| v.iter().copied().fold(f64::INFINITY, f64::min);
     let (dx, dy) = (min(&grid.dx), min(&grid.dy));
@@ -544,7 +544,7 @@ pub fn viscous_dt_limit(grid: &Grid, params: &FlowParams) -> f64 {
     params.visc_safety / (4.0 * nu * (1.0 / (dx * dx) + 1.0 / (dy * dy)))
 }
 
-/// The largest stable Δt of the explicit (Adams–Bashforth 2) near field, SPEC §6 "Time step":
+/// The largest stable Δt of the explicit (Adams–Bashforth 2) near field, docs/physics.md §6 "Time step":
 /// the harmonic combination 1/Δt = 1/Δt_conv + 1/Δt_visc of the convective limit
 /// Δt_conv = CFL / max(|w_x|/Δx + |w_y|/Δy) (`rate`: that maximum) and the viscous limit.
 ///

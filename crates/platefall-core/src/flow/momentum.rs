@@ -1,4 +1,4 @@
-//! Explicit momentum right-hand side in the mixed frame (SPEC §3, seed eqs 49–52):
+//! Explicit momentum right-hand side in the mixed frame (docs/physics.md §3, dissertation eqs 49–52):
 //!
 //! ```text
 //!   H_u = −∇·((u − g) u) + (1/Re) ∇²u + θ̇ v

@@ -1,4 +1,4 @@
-//! The loads on the plate as the solver reports them (SPEC §5): the force and moment in body
+//! The loads on the plate as the solver reports them (docs/physics.md §5): the force and moment in body
 //! axes, and the lift, drag and moment coefficients. How they are computed from the flow is in
 //! `wall::loads`.
 use super::frame::Frame;
@@ -15,7 +15,7 @@ pub struct BodyAxesLoads {
     pub fy_pressure: f64,
 }
 
-/// Lift, drag and moment coefficients on the reference speed (SPEC §5): with ê_V the unit vector
+/// Lift, drag and moment coefficients on the reference speed (docs/physics.md §5): with ê_V the unit vector
 /// of the plate's velocity in body axes and ê_L = ê_V turned 90° counter-clockwise,
 /// D = −F·ê_V, L = F·ê_L, C = 2·(force)/(U_ref² c). When the plate is not translating, ê_V falls
 /// back to the body x axis.

@@ -1,4 +1,4 @@
-//! The pressure projection (SPEC §3: u_x + v_y = 0).
+//! The pressure projection (docs/physics.md §3: u_x + v_y = 0).
 //!
 //! With the predicted velocity u*, find φ with  Σ_faces L_f A_f ∂φ/∂n = (the cell's outflow of u*)
 //! in every cell that carries a pressure, then u = u* − ∇φ on the fluid faces and p = φ/Δt

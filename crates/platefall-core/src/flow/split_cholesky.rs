@@ -1,4 +1,4 @@
-//! The pressure operator's Cholesky factor, ordered for two threads (SPEC §3, the projection).
+//! The pressure operator's Cholesky factor, ordered for two threads (docs/physics.md §3, the projection).
 //!
 //! The unknowns are split by a separator — the column of cells at the middle of the grid — into a
 //! left and a right part that do not touch each other. Ordered left part, right part, separator

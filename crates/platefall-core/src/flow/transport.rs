@@ -1,4 +1,4 @@
-//! The implicit grid-transport operator along one kind of grid line (SPEC §3; used by
+//! The implicit grid-transport operator along one kind of grid line (docs/physics.md §3; used by
 //! `implicit/`): L q = ∂(w q) for a velocity w constant along the line (w = −g, the motion of
 //! fluid at rest relative to the grid), in flux form
 //!

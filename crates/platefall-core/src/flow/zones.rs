@@ -1,4 +1,4 @@
-//! Where the grid-velocity transport is taken implicitly (SPEC §3, far field; see `implicit.rs`).
+//! Where the grid-velocity transport is taken implicitly (docs/physics.md §3, far field; see `implicit.rs`).
 //!
 //! On the body-fixed grid g_x = u0 − θ̇y is constant along each row and g_y = v0 + θ̇x along each
 //! column. Far from the plate the rows through the plate keep Δy = h and the columns over the chord

@@ -1,4 +1,4 @@
-//! The plate's section, given by shape and size rather than by grid cells (SPEC §1, §4).
+//! The plate's section, given by shape and size rather than by grid cells (docs/physics.md §1, §4).
 //!
 //! Every shape is measured in chords (the reference length c = 1) and placed with its centroid
 //! at the body origin, the point the plate's motion and moments refer to. A rectangle is

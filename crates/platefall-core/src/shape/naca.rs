@@ -89,7 +89,7 @@ impl NacaCode {
     }
 }
 
-/// The mean line's height and slope at x (SPEC-free: the NACA four-digit definition above).
+/// The mean line's height and slope at x (not from the dissertation: the NACA four-digit definition above).
 fn mean_line(m: f64, p: f64, x: f64) -> (f64, f64) {
     if m == 0.0 {
         (0.0, 0.0)

@@ -1,5 +1,5 @@
 //! Checks across the values of a run description that are each in range alone but cannot work
-//! together (SPEC §1, §6): a run must outlast the plate's development (pinned, free) or spin-up
+//! together (docs/physics.md §1, §6): a run must outlast the plate's development (pinned, free) or spin-up
 //! (forced), or it ends before the case begins.
 use super::motion::Case;
 use crate::param::{InputError, Param};

@@ -1,4 +1,4 @@
-//! The per-step history of a run, bounded in memory (SPEC §8 needs the whole time series only
+//! The per-step history of a run, bounded in memory (docs/physics.md §8 needs the whole time series only
 //! through means, extremes, turn times and a spectrum).
 //!
 //! Every step is pushed; at most `capacity` samples are retained. When full, every other retained

@@ -1,4 +1,4 @@
-//! The coupled time loop (SPEC §6 "Coupling"): each step the flow gives the loads for the current
+//! The coupled time loop (docs/physics.md §6 "Coupling"): each step the flow gives the loads for the current
 //! motion, the rigid-body step gives the next motion, and that motion sets the flow's boundary for
 //! the next flow step. With strong coupling (the default) the body step takes the loads without
 //! the flow's instantaneous answer to the last change of motion and solves its equations with the

@@ -1,4 +1,4 @@
-//! The motion laws of the four cases (SPEC §1, cases A–D): what is prescribed, and when the plate
+//! The motion laws of the four cases (docs/physics.md §1, cases A–D): what is prescribed, and when the plate
 //! is released to its own equations of motion.
 use std::f64::consts::PI;
 
@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::body::BodyState;
 
-/// The prescribed or free motion of a run (SPEC §1, cases A–D).
+/// The prescribed or free motion of a run (docs/physics.md §1, cases A–D).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Case {
@@ -52,7 +52,7 @@ pub enum Case {
     },
 }
 
-/// Which of the four cases a run is (SPEC §1), without its parameters.
+/// Which of the four cases a run is (docs/physics.md §1), without its parameters.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum CaseKind {

@@ -6,7 +6,7 @@ use crate::flow::Frame;
 
 /// A flow snapshot on the MAC grid.
 ///
-/// Velocities are the **inertial** velocity components along the body axes (SPEC §3).
+/// Velocities are the **inertial** velocity components along the body axes (docs/physics.md §3).
 #[derive(Clone, Debug)]
 pub struct FieldSnapshot {
     /// Steps taken so far.

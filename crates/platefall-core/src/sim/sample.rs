@@ -14,7 +14,7 @@ pub struct StepSample {
     pub t: f64,
     /// The step just taken.
     pub dt: f64,
-    /// Lift coefficient on the reference speed (SPEC §5).
+    /// Lift coefficient on the reference speed (docs/physics.md §5).
     pub cl: f64,
     /// Drag coefficient.
     pub cd: f64,

@@ -1,5 +1,5 @@
 //! The typed description of a run (grid, fluid, plate, motion law, time control), and its
-//! validation (SPEC §1–§6) into the [`ValidatedConfig`] that
+//! validation (docs/physics.md §1–§6) into the [`ValidatedConfig`] that
 //! [`Simulation::new`](super::Simulation::new) takes. The constructors that fill one in for each
 //! case with the command line's defaults are in [`crate::config::RunBuilder`].
 use std::f64::consts::PI;
@@ -15,7 +15,7 @@ use crate::grid::{Grid, GridSpec};
 use crate::param::{check_range, check_whole, rounded, InputError, Param};
 use crate::shape::Shape;
 
-/// The physical scales behind a run's units (SPEC §2): the chord c and the velocity scale U in SI
+/// The physical scales behind a run's units (docs/physics.md §2): the chord c and the velocity scale U in SI
 /// units. Reports use them to give results in physical units; the solver never reads them.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ReferenceScales {
@@ -31,7 +31,7 @@ pub struct ReferenceScales {
 /// or `null`.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PlateSource {
-    /// The seed's card preset (SPEC §8), possibly with some values overridden.
+    /// The dissertation's card preset (docs/physics.md §8), possibly with some values overridden.
     Card,
     /// A plate described physically; its one-line description (sizes, density, fluid).
     Physical(String),
@@ -86,16 +86,16 @@ pub struct BodyConfig {
     pub scales: Option<ReferenceScales>,
     /// m*, I*, g*, m_f* and the applied moment.
     pub props: PlateProps,
-    /// Adams–Bashforth order (1..=6) of the plate's equations (SPEC §6).
+    /// Adams–Bashforth order (1..=6) of the plate's equations (docs/physics.md §6).
     pub ab_order: usize,
     /// How the Adams–Bashforth history is started at release.
     pub ab_start: AbStart,
-    /// How the flow's loads enter the body's equations (SPEC §6; default strong).
+    /// How the flow's loads enter the body's equations (docs/physics.md §6; default strong).
     #[serde(default)]
     pub coupling: Coupling,
 }
 
-/// When a run ends and how its time step is bounded (SPEC §6 "Time step").
+/// When a run ends and how its time step is bounded (docs/physics.md §6 "Time step").
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct TimeControl {
     /// End time in convective times c/U from the impulsive start (development included).
@@ -104,10 +104,10 @@ pub struct TimeControl {
     pub turns: Option<f64>,
     /// Time-step ceiling (seed: 0.01).
     pub dt_max: f64,
-    /// The seed's rotation rule Δt·|θ̇| ≤ C_c (seed: 0.005).
+    /// The dissertation's rotation rule Δt·|θ̇| ≤ C_c (seed: 0.005).
     pub cc: f64,
     /// A coupled run's summary averages over the whole turns from this complete turn after
-    /// release on (1: from the first; SPEC §7). Read by post-processing only.
+    /// release on (1: from the first; docs/physics.md §7). Read by post-processing only.
     #[serde(default = "first_turn")]
     pub average_from_turn: usize,
 }
@@ -118,7 +118,7 @@ fn first_turn() -> usize {
 }
 
 impl Default for TimeControl {
-    /// 80 convective times, no turn limit, the seed's ceiling Δt ≤ 0.01 and rotation rule 0.005.
+    /// 80 convective times, no turn limit, the dissertation's ceiling Δt ≤ 0.01 and rotation rule 0.005.
     fn default() -> Self {
         TimeControl {
             t_end: 80.0,
@@ -133,9 +133,9 @@ impl Default for TimeControl {
 /// Everything that defines a run; serialised into the recording and the summary.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RunConfig {
-    /// The motion law (SPEC §1).
+    /// The motion law (docs/physics.md §1).
     pub case: Case,
-    /// The body-fixed grid and the plate's thickness on it (SPEC §4).
+    /// The body-fixed grid and the plate's thickness on it (docs/physics.md §4).
     pub grid: GridSpec,
     /// The fluid (Re) and the flow solver's numerical parameters.
     pub flow: FlowParams,

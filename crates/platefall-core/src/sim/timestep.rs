@@ -1,10 +1,10 @@
-//! Time-step control of the coupled loop (SPEC §6 "Time step").
+//! Time-step control of the coupled loop (docs/physics.md §6 "Time step").
 use super::spec::TimeControl;
 
 /// Largest growth of Δt from one step to the next.
 pub const MAX_GROWTH: f64 = 1.2;
 
-/// Chooses Δt at time `t`: the flow's own stability limit, the ceiling, the seed's rotation rule
+/// Chooses Δt at time `t`: the flow's own stability limit, the ceiling, the dissertation's rotation rule
 /// Δt·|θ̇| ≤ C_c, at most [`MAX_GROWTH`] × the previous step (`dt_prev`, 0 before the first step),
 /// landing exactly on the release time and on t_end without leaving a sliver of a step.
 pub fn choose_dt(

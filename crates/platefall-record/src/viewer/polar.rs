@@ -1,4 +1,4 @@
-//! The plots against α (SPEC §7): C_L, C_D, C_M and V, θ̇ drawn over the angle of attack in 2-D
+//! The plots against α (docs/physics.md §7): C_L, C_D, C_M and V, θ̇ drawn over the angle of attack in 2-D
 //! views, each with its own axes under `/polar/{coefficients,motion}/axes`.
 //!
 //! A 2-D view keeps a 1:1 aspect, so the α axis is stretched to fit the plot's value range:

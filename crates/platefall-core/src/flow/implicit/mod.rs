@@ -1,4 +1,4 @@
-//! Implicit grid-velocity transport in the outer zone (SPEC §3; the zones are in `zones.rs`).
+//! Implicit grid-velocity transport in the outer zone (docs/physics.md §3; the zones are in `zones.rs`).
 //!
 //! Because ∂g_x/∂x = 0 and ∂g_y/∂y = 0 on the body-fixed grid, each directional flux splits
 //! exactly: ∂x((u − g_x)q) = ∂x(u q) − g_x ∂x q and ∂y((v − g_y)q) = ∂y(v q) − g_y ∂y q. On a

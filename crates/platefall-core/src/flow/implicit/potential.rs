@@ -1,4 +1,4 @@
-//! The incremental pressure of the implicit far field (SPEC §3): p += A φ/Δt.
+//! The incremental pressure of the implicit far field (docs/physics.md §3): p += A φ/Δt.
 use super::{line_velocity, Part};
 use crate::flow::frame::Frame;
 use crate::flow::metrics::{Component, Metrics};

@@ -1,5 +1,5 @@
 //! Which velocity faces the fluid owns, how much of each is open, and which cells carry a
-//! pressure (SPEC §3, §4).
+//! pressure (docs/physics.md §3, §4).
 //!
 //! A face whose point (its centre, where the MAC unknown lives) lies inside the plate or on its
 //! boundary is *held*: its covered part carries the plate's rigid velocity g (exact, g being

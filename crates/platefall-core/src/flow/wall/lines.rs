@@ -1,4 +1,4 @@
-//! The plate's cover of the grid lines the staggered unknowns lie on (SPEC §4): vertical lines
+//! The plate's cover of the grid lines the staggered unknowns lie on (docs/physics.md §4): vertical lines
 //! through the nodes (u faces) and through the cell centres (v faces, pressure), horizontal lines
 //! through the nodes (v faces) and the centres (u faces, pressure).
 use crate::grid::Grid;

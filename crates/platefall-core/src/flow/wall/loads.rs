@@ -1,4 +1,4 @@
-//! The force and moment of the fluid on the plate (SPEC §5), to second order in the spacing.
+//! The force and moment of the fluid on the plate (docs/physics.md §5), to second order in the spacing.
 //!
 //! The plate's boundary is cut into arcs at its corners and where its normal turns through 45°.
 //! On an arc whose normal is closer to y (x), the loads are sampled where vertical (horizontal)

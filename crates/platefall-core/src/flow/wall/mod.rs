@@ -1,4 +1,4 @@
-//! The plate inside the body-fixed grid (SPEC §3–§5): which unknowns are fluid, how the
+//! The plate inside the body-fixed grid (docs/physics.md §3–§5): which unknowns are fluid, how the
 //! projection sees the plate's boundary, the momentum equations next to it, and the loads on it.
 //!
 //! The body never moves relative to the grid, so all of this is computed once from the plate's

@@ -1,4 +1,4 @@
-//! The momentum equations next to the plate (SPEC §3, no-slip u = g on the plate).
+//! The momentum equations next to the plate (docs/physics.md §3, no-slip u = g on the plate).
 //!
 //! Along each grid line, a fluid point P whose neighbour Q lies beyond the plate's boundary (the
 //! boundary crosses PQ at the fraction δ of the way, at the wall point b) does not use Q's value:
