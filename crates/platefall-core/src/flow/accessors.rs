@@ -2,9 +2,10 @@
 use super::array::Padded;
 use super::frame::Frame;
 use super::metrics::Metrics;
+use super::params::FlowParams;
 use super::plate::{self, BodyAxesLoads};
 use super::pressure::Pressure;
-use super::{FlowParams, FlowSolver};
+use super::FlowSolver;
 use crate::grid::Grid;
 
 impl FlowSolver {

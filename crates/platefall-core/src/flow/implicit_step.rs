@@ -1,14 +1,12 @@
 //! The implicit far field's variants of the step's phases (docs/physics.md §3; the scheme is
 //! described in `implicit/mod.rs`): the predictor (the right-hand side, the boundary values at
-//! n+1, the row and column sweeps) and the projection with the incremental pressure; and the
-//! far field's state a solver starts with.
-use super::boundary::Outflow;
+//! n+1, the row and column sweeps) and the projection with the incremental pressure.
+use super::boundary::{OuterBc, Outflow};
+use super::frame::Frame;
 use super::implicit::{self, GhostEnds, Inputs, Part, State, Weights};
-use super::metrics::{Component, Metrics};
+use super::metrics::Component;
 use super::pressure::PressureUpdate;
-use super::zones::Zones;
-use super::{FarFieldScheme, FlowError, FlowParams, FlowSolver, Frame, OuterBc, SetupError};
-use crate::grid::Grid;
+use super::FlowSolver;
 
 impl FlowSolver {
     /// The predictor of the implicit far field (see `implicit/mod.rs`): the right-hand side, the
@@ -132,26 +130,5 @@ impl FlowSolver {
         self.wall.hold(&mut state.u.d, &mut state.v.d, &zero, &zero);
         self.pressure
             .potential(&state.u.d, &state.v.d, &self.grid, &self.wall, &mut self.p);
-    }
-}
-
-/// The split lines and the implicit workspaces for the far-field scheme of `params` (none for
-/// the explicit scheme).
-///
-/// # Errors
-/// [`SetupError::NearField`] when a split line would cross the plate.
-pub(super) fn far_field_state(
-    grid: &Grid,
-    params: &FlowParams,
-    metrics: &Metrics,
-) -> Result<(Zones, Option<Box<State>>), FlowError> {
-    match params.far_field {
-        FarFieldScheme::Explicit => Ok((Zones::none(grid), None)),
-        FarFieldScheme::Implicit => {
-            let z = Zones::new(grid, params.near_x, params.near_y);
-            z.check_plate(grid).map_err(SetupError::NearField)?;
-            let state = State::new(grid.nx, grid.ny, metrics);
-            Ok((z, Some(Box::new(state))))
-        }
     }
 }

@@ -1,5 +1,5 @@
 //! The stability limits of the flow step (docs/physics.md §6 "Time step") and the blow-up bound.
-use super::FlowParams;
+use super::params::FlowParams;
 use crate::grid::Grid;
 
 /// Velocities beyond this multiple of (1 + V + |θ̇|) mean the solution has blown up.

@@ -36,17 +36,22 @@
 //!
 //! # Files
 //!
-//! `impl FlowSolver` is in these files: this one (construction, `prepare` and the phases of
-//! `advance`), `implicit_step.rs` (the implicit far field's predictor and incremental
-//! projection), `accessors.rs` (the state read from outside), `snapshot.rs` (checkpoints),
-//! `added_mass.rs` (the added-mass response) and `wake.rs` (the recirculation length). The rest
-//! holds no solver state: `params.rs` and `error.rs` (inputs and errors), `limits.rs` (stable
-//! Δt), `ab2.rs` (time weights), `momentum.rs` and `transport.rs` (the explicit right-hand side
-//! and the line operators), `implicit/` (the implicit far field's line solves), `zones.rs`
-//! (where it applies), `boundary.rs` (outer boundary), `wall/` (the plate in the grid: faces,
-//! near-wall stencils, loads, and [`check_representable`]), `pressure.rs` and
-//! `split_cholesky.rs` (the projection), `metrics.rs`, `array.rs`, `band.rs`, `frame.rs` and
-//! `plate.rs` (geometry, storage, banded solves, motion, load coefficients).
+//! `impl FlowSolver` is in these files:
+//!
+//! - this one: the struct, construction, `prepare` and the phases of `advance`;
+//! - `implicit_step.rs`: the implicit far field's predictor and incremental projection;
+//! - `accessors.rs`: the state read from outside (fields, motion, time, loads, sizes);
+//! - `snapshot.rs`: checkpoints; `added_mass.rs`: the added-mass response; `wake.rs`: the
+//!   recirculation length.
+//!
+//! The other files hold no solver state: `params.rs` and `error.rs` (inputs and errors),
+//! `far_field.rs` (the far-field scheme's start), `limits.rs` (stable Δt), `ab2.rs` (time
+//! weights), `momentum.rs` and `transport.rs` (the explicit right-hand side and the line
+//! operators), `implicit/` (the implicit far field's line solves), `zones.rs` (where it applies),
+//! `boundary.rs` (outer boundary), `wall/` (the plate in the grid: faces, near-wall stencils,
+//! loads, and [`check_representable`]), `pressure.rs` and `split_cholesky.rs` (the projection),
+//! `metrics.rs`, `array.rs`, `band.rs`, `frame.rs` and `plate.rs` (geometry, storage, banded
+//! solves, motion, load coefficients).
 mod ab2;
 mod accessors;
 mod added_mass;
@@ -54,6 +59,7 @@ mod array;
 mod band;
 mod boundary;
 mod error;
+mod far_field;
 mod frame;
 mod implicit;
 mod implicit_step;
@@ -157,7 +163,7 @@ impl FlowSolver {
         let pressure = Pressure::new(&grid, &metrics, &wall.faces).map_err(SetupError::Pressure)?;
         let dt_visc = viscous_dt_limit(&grid, &params);
         let (nx, ny) = (grid.nx, grid.ny);
-        let (zones, implicit) = implicit_step::far_field_state(&grid, &params, &metrics)?;
+        let (zones, implicit) = far_field::far_field_state(&grid, &params, &metrics)?;
         let mut s = FlowSolver {
             u: Padded::zeros(nx + 1, ny),
             v: Padded::zeros(nx, ny + 1),

@@ -8,7 +8,9 @@ use super::faces::Faces;
 use super::lines::Lines;
 use super::loads::Loads;
 use super::stencils::Stencils;
-use crate::flow::{Frame, Metrics, Padded};
+use crate::flow::array::Padded;
+use crate::flow::frame::Frame;
+use crate::flow::metrics::Metrics;
 use crate::grid::{Grid, GridSpec, Stretch};
 use crate::shape::Shape;
 
