@@ -43,7 +43,7 @@ pub fn case_config(args: &[String]) -> Result<platefall_core::sim::ValidatedConf
 
 /// The program and version that checkpoints record, e.g. "platefall 0.1.0".
 pub fn program_version() -> String {
-    run::version()
+    crate::version::program_version()
 }
 
 #[cfg(test)]

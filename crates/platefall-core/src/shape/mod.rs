@@ -106,18 +106,6 @@ pub enum ShapeError {
     NoArea,
 }
 
-impl ShapeError {
-    /// The input the error is about.
-    pub fn param(&self) -> crate::param::Param {
-        use crate::param::Param;
-        match self {
-            ShapeError::Thickness(_) => Param::Thickness,
-            ShapeError::EdgeRadius { .. } => Param::EdgeRadius,
-            _ => Param::Polygon,
-        }
-    }
-}
-
 impl Shape {
     /// A sharp-cornered rectangle of the given thickness (chords).
     pub fn rect(thickness: f64) -> Shape {
