@@ -4,7 +4,8 @@
 //! the item it names, following `use` re-exports (`pub use child::Item` in a `mod.rs` makes a
 //! sibling's `super::Item` an arrow to the child, and the re-export an arrow from the `mod.rs`
 //! to the child), or to the module's file when it names a module. Declaring a module is not
-//! using it.
+//! using it, and unit tests (`#[cfg(test)]` modules and imports) are left out: like the tests
+//! under `tests/`, they may use any file of their crate.
 mod cycles;
 mod lex;
 mod parse;
@@ -26,6 +27,8 @@ struct Module {
     defs: BTreeSet<String>,
     /// Its `use` leaves: the path and what it binds.
     imports: Vec<(Vec<String>, Binding)>,
+    /// Whether it is compiled for unit tests only (it or a module around it is `#[cfg(test)]`).
+    test: bool,
 }
 
 impl Module {
@@ -36,6 +39,7 @@ impl Module {
             children: Vec::new(),
             defs: BTreeSet::new(),
             imports: Vec::new(),
+            test: false,
         }
     }
 }
@@ -95,7 +99,9 @@ pub fn crate_graph(workspace: &Path, root: &str) -> FileGraph {
         for d in &p.decls {
             let at = scope_module(&modules, top, &d.scope);
             let child = modules.len();
-            modules.push(Module::new(file, Some(at)));
+            let mut module = Module::new(file, Some(at));
+            module.test = d.test || modules[at].test;
+            modules.push(module);
             modules[at].children.push((d.name.clone(), child));
             if !d.inline {
                 queue.push((
@@ -131,6 +137,9 @@ pub fn crate_graph(workspace: &Path, root: &str) -> FileGraph {
     for (f, p) in parsed.iter().enumerate() {
         for r in &p.refs {
             let from = scope_module(&modules, file_top[f], &r.scope);
+            if modules[from].test {
+                continue;
+            }
             for g in resolve(&modules, from, &r.segments, 0) {
                 if g != f {
                     arrows

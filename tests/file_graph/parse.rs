@@ -13,6 +13,8 @@ pub struct Decl {
     pub path_attr: Option<String>,
     /// Whether its body is in this file (`mod NAME { … }`).
     pub inline: bool,
+    /// Whether it is compiled for unit tests only (`#[cfg(test)]`).
+    pub test: bool,
 }
 
 /// A path a file names that may lead to another module of its crate.
@@ -76,6 +78,15 @@ fn is_sep(t: Option<&(Token, usize)>) -> bool {
     matches!(t, Some((Token::PathSep, _)))
 }
 
+/// Whether tokens from `i` read `#[cfg(test)]`.
+fn is_cfg_test(t: &[(Token, usize)], i: usize) -> bool {
+    is(t.get(i + 1), '[')
+        && ident(t.get(i + 2)) == Some("cfg")
+        && is(t.get(i + 3), '(')
+        && ident(t.get(i + 4)) == Some("test")
+        && is(t.get(i + 5), ')')
+}
+
 /// Parses `text`.
 pub fn parse(text: &str) -> Parsed {
     let t = tokens(text);
@@ -84,19 +95,29 @@ pub fn parse(text: &str) -> Parsed {
     let mut scope: Vec<(String, usize)> = Vec::new();
     let mut depth = 0usize;
     let mut path_attr: Option<String> = None;
+    // Whether the next item is `#[cfg(test)]`.
+    let mut cfg_test = false;
     let mut i = 0;
     while i < t.len() {
         let names = || scope.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
         match &t[i].0 {
-            Token::Punct('{') => depth += 1,
+            Token::Punct('{') => {
+                depth += 1;
+                cfg_test = false;
+            }
             Token::Punct('}') => {
                 if scope.last().is_some_and(|(_, d)| *d == depth) {
                     scope.pop();
                 }
                 depth = depth.saturating_sub(1);
                 path_attr = None;
+                cfg_test = false;
             }
-            Token::Punct(';') => path_attr = None,
+            Token::Punct(';') => {
+                path_attr = None;
+                cfg_test = false;
+            }
+            Token::Punct('#') if is_cfg_test(&t, i) => cfg_test = true,
             Token::Punct('#') if is(t.get(i + 1), '[') && ident(t.get(i + 2)) == Some("path") => {
                 if let Some((Token::Str(s), _)) = t.get(i + 4) {
                     path_attr = Some(s.clone());
@@ -116,6 +137,7 @@ pub fn parse(text: &str) -> Parsed {
                         name: name.to_string(),
                         path_attr: path_attr.take(),
                         inline,
+                        test: std::mem::take(&mut cfg_test),
                     });
                     if inline {
                         depth += 1;
@@ -129,6 +151,10 @@ pub fn parse(text: &str) -> Parsed {
                 let mut leaves = Vec::new();
                 let end = use_tree(&t, i + 1, &[], &mut leaves);
                 let line = t[i].1;
+                if std::mem::take(&mut cfg_test) {
+                    // A unit test's import: tests may use any file of their crate.
+                    leaves.clear();
+                }
                 for (segments, binding) in leaves {
                     out.refs.push(Reference {
                         scope: names(),
