@@ -28,15 +28,16 @@ mod history;
 mod motion;
 mod output;
 mod sample;
+mod saved;
 mod spec;
 mod timestep;
 
-pub use checkpoint::{RestoreError, SimState};
 pub use error::SimError;
 pub use history::{History, Quantity, DEFAULT_CAPACITY};
 pub use motion::{Case, CaseKind};
 pub use output::{FieldSnapshot, RunRecord, RunStatus, StatusKind};
 pub use sample::StepSample;
+pub use saved::{RestoreError, SimState};
 pub use spec::{BodyConfig, PlateSource, ReferenceScales, RunConfig, TimeControl, ValidatedConfig};
 pub use timestep::{choose_dt, MAX_GROWTH};
 
