@@ -12,7 +12,7 @@ mod file_graph;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-use file_graph::{circles, crate_graph, Circle};
+use file_graph::{circles, crate_graph};
 
 /// Every `.rs` file under `<rel>` of the workspace (a file or a directory).
 fn sources(rel: &str) -> Vec<PathBuf> {
@@ -126,33 +126,6 @@ const CRATE_ROOTS: &[&str] = &[
     "src/main.rs",
 ];
 
-/// Circles inside the flow solver and the grid, which the restructuring of the step (on its own
-/// branch, `skel`) removes: the grid validating itself through the wall treatment that uses the
-/// grid; the implicit far field's weights and its parts; `impl FlowSolver` spread over files
-/// that `flow/mod.rs` uses. A circle is tolerated only when all its files are in one of these
-/// sets. THE LEAD DELETES THIS LIST (and its use below) WHEN THAT BRANCH MERGES.
-const KNOWN_CIRCLES_UNTIL_SKEL_MERGES: &[&[&str]] = &[
-    &[
-        "crates/platefall-core/src/grid.rs",
-        "crates/platefall-core/src/flow/metrics.rs",
-        "crates/platefall-core/src/flow/wall/faces.rs",
-        "crates/platefall-core/src/flow/wall/lines.rs",
-        "crates/platefall-core/src/flow/wall/loads.rs",
-        "crates/platefall-core/src/flow/wall/mod.rs",
-        "crates/platefall-core/src/flow/wall/stencils.rs",
-    ],
-    &[
-        "crates/platefall-core/src/flow/implicit/mod.rs",
-        "crates/platefall-core/src/flow/implicit/part.rs",
-        "crates/platefall-core/src/flow/implicit/potential.rs",
-    ],
-    &[
-        "crates/platefall-core/src/flow/mod.rs",
-        "crates/platefall-core/src/flow/added_mass.rs",
-        "crates/platefall-core/src/flow/snapshot.rs",
-    ],
-];
-
 /// The circles of the crate rooted at `root`, each as its path with the line behind every arrow.
 fn unexpected_circles(root: &str) -> Vec<String> {
     let workspace = Path::new(env!("CARGO_MANIFEST_DIR"));
@@ -161,14 +134,8 @@ fn unexpected_circles(root: &str) -> Vec<String> {
         graph.files.len() > 1 || root.ends_with("main.rs"),
         "{root}: no modules found"
     );
-    let known = |c: &Circle| {
-        KNOWN_CIRCLES_UNTIL_SKEL_MERGES
-            .iter()
-            .any(|set| c.members.iter().all(|m| set.contains(&m.as_str())))
-    };
     circles(&graph.named())
         .into_iter()
-        .filter(|c| !known(c))
         .map(|c| {
             let why: Vec<String> = c
                 .path

@@ -10,7 +10,7 @@ mod cycles;
 mod lex;
 mod parse;
 
-pub use cycles::{circles, Circle};
+pub use cycles::circles;
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
