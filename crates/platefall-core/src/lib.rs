@@ -37,6 +37,8 @@
 
 pub mod param;
 
+pub mod poisson3;
+
 pub mod body;
 pub mod flow;
 // Being reworked for plate shapes (the grid spec gets a shape); its fields get their
