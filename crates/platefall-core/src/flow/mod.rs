@@ -49,6 +49,8 @@ pub use array::{Padded, GHOST};
 pub use boundary::{OuterBc, VelocityFn};
 pub use frame::Frame;
 pub use metrics::{Axis, Metrics};
+/// The κ = 1/3 limited face value, shared with the three-dimensional solver (`flow3d`).
+pub(crate) use momentum::face_value;
 pub use plate::BodyAxesLoads;
 pub use snapshot::{FlowState, StateMismatch};
 pub use zones::PlateCrossing;
