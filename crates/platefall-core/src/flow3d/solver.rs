@@ -13,6 +13,7 @@ use super::project::{
     cell_fluxes, correct, JacobiCg, PoissonOperator, PoissonSolve, SolveStats, Stop,
 };
 use super::{Flow3Error, FlowParams3, BLOWUP_FACTOR};
+use crate::flow::Ab2;
 
 /// The outer boundary's view of the solver's fields (a macro: the borrows stay per field).
 macro_rules! outer {
@@ -178,12 +179,11 @@ impl FlowSolver3 {
     /// u* = uⁿ + Δt[(1 + r/2)Hⁿ − (r/2)Hⁿ⁻¹] (variable-step AB2, r = Δt/Δtⁿ⁻¹; Euler on the
     /// first step). H is zero outside the interior points, so those keep their values.
     fn predict(&mut self, dt: f64) {
-        let (c_new, c_old) = if self.steps == 0 {
-            (1.0, 0.0)
-        } else {
-            let r = dt / self.dt_prev;
-            (1.0 + 0.5 * r, -0.5 * r)
-        };
+        let dt_prev = if self.steps == 0 { 0.0 } else { self.dt_prev };
+        let Ab2 {
+            new: c_new,
+            old: c_old,
+        } = Ab2::new(dt, dt_prev);
         use rayon::prelude::*;
         for c in 0..3 {
             let (h, h_old) = (&self.h[c], &self.h_old[c]);
