@@ -9,10 +9,11 @@ use anyhow::Context as _;
 use clap::Args;
 
 use super::args::CheckpointArgs;
+use super::branch;
 use super::checkpointer::Checkpointer;
 use super::command::{parse, Command};
 use super::config::run_config;
-use super::record_args::RecordArgs;
+use super::record_args::{ProgressArg, RecordArgs};
 use super::run::{command_line, execute, version, Started};
 use super::signals::Interrupts;
 use crate::exit::Exit;
@@ -58,6 +59,17 @@ pub struct ResumeArgs {
     /// No progress output
     #[arg(long, short = 'q')]
     pub quiet: bool,
+    /// Progress display on stderr [default: the run's]
+    #[arg(long, value_enum, value_name = "MODE")]
+    pub progress: Option<ProgressArg>,
+    /// Branch an ensemble member: add D to the plate's angular velocity θ̇ (rad per c/U) before
+    /// going on (pinned and free runs)
+    #[arg(long, value_name = "D", allow_negative_numbers = true)]
+    pub perturb_omega: Option<f64>,
+    /// Average the summary's means from this complete turn after release on [default: the
+    /// run's]
+    #[arg(long, value_name = "K")]
+    pub average_from_turn: Option<usize>,
     // --checkpoint-every, --checkpoint: a case run's options, with resume's defaults (above).
     #[command(flatten)]
     pub checkpoint: CheckpointArgs,
@@ -104,7 +116,10 @@ pub enum ResumeRefusal {
 /// Runs `platefall resume`.
 pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let given_every = args.checkpoint.given_every()?;
-    let ckpt = read_checkpoint(&args.file, &version())?;
+    let mut ckpt = read_checkpoint(&args.file, &version())?;
+    if let Some(d) = args.perturb_omega {
+        branch::perturb_omega(&mut ckpt.sim, d)?;
+    }
     let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
         file: args.file.clone(),
         why: e.kind().to_string(),
@@ -118,6 +133,9 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let config = resumed_config(&cmd.command, &ckpt, args)?;
     let mut info = ckpt.resume.clone();
     (info.t_end, info.turns) = (config.time.t_end, config.time.turns);
+    if let Some(turn) = args.average_from_turn {
+        branch::set_average_from_turn(&mut info, turn)?;
+    }
     let opts = resumed_outputs(record, &mut info, &ckpt, args, config.case.kind())?;
     let every = given_every.or(info.every);
     info.every = every;
@@ -160,6 +178,7 @@ fn resumed_config(
     let mut c = config.config().clone();
     c.time.t_end = args.t_end.unwrap_or(ckpt.resume.t_end);
     c.time.turns = args.turns.or(ckpt.resume.turns);
+    c.time.average_from_turn = args.average_from_turn.unwrap_or(c.time.average_from_turn);
     Ok(c.validate().map_err(super::flags::ArgError::from)?)
 }
 
@@ -182,6 +201,7 @@ fn resumed_outputs(
     };
     r.no_save = args.no_save || r.save.is_none();
     r.quiet |= args.quiet;
+    r.progress = args.progress.unwrap_or(r.progress);
     let summary = args.summary.clone().or(info.summary.clone());
     let ckpt_path = args.checkpoint_out();
     let others: Vec<(&'static str, &Path)> = summary

@@ -12,7 +12,10 @@
 //! - [`stats`]: confidence intervals of time means of autocorrelated series (batch means,
 //!   integrated autocorrelation times, Student's t); [`intervals`]: the batches of a run and the
 //!   interval of every mean in its summary; [`convergence`]: observed order, Richardson
-//!   extrapolation and the grid-convergence index of a refinement study.
+//!   extrapolation and the grid-convergence index of a refinement study; [`ensemble`]: the
+//!   mean and interval of an ensemble of independent members, their independence, the
+//!   separation of two ensembles and the planner; [`rng`]: the seeded generator of the
+//!   ensembles' perturbations and of the synthetic tests.
 //! - [`fields`]: the staggered-grid quantities. [`vorticity_at_nodes`] (ω = ∂v/∂x − ∂u/∂y at cell
 //!   corners), [`stream_function_at_nodes`] (ψ with u = ψ_y, v = −ψ_x, integrated from the MAC face
 //!   fluxes: exact for a discretely divergence-free field), and [`StreamFrame`], the observer frames
@@ -33,6 +36,7 @@
 pub mod analysis;
 pub mod contour;
 pub mod convergence;
+pub mod ensemble;
 pub mod fields;
 pub mod intervals;
 pub mod painter;
@@ -41,6 +45,7 @@ pub mod plot_range;
 pub mod regime;
 pub mod report;
 pub mod resample;
+pub mod rng;
 pub mod stats;
 pub mod summary;
 pub mod view;
