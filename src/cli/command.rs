@@ -8,7 +8,7 @@ use super::args::{ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs};
 use super::bench_args::BenchArgs;
 use super::converge_args::ConvergeArgs;
 use super::record_args::RecordArgs;
-use super::resume::ResumeArgs;
+use super::resume_args::ResumeArgs;
 use super::sweep_args::SweepArgs;
 use crate::exit::Exit;
 

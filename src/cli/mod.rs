@@ -20,6 +20,7 @@ mod limits;
 mod plate_args;
 mod record_args;
 mod resume;
+mod resume_args;
 mod run;
 mod shape_args;
 mod signals;
@@ -44,7 +45,7 @@ pub fn case_config(args: &[String]) -> Result<platefall_core::sim::ValidatedConf
 
 /// The program and version that checkpoints record, e.g. "platefall 0.1.0".
 pub fn program_version() -> String {
-    run::version()
+    crate::version::program_version()
 }
 
 #[cfg(test)]
@@ -58,8 +59,8 @@ pub fn main() -> ExitCode {
     };
     let result = match &cli.command {
         Command::Bench(args) => bench_args::run_bench(args).map(|()| Exit::Completed),
-        Command::Sweep(args) => return sweep_args::run(args).into(),
-        Command::Converge(args) => return converge_args::run(args).into(),
+        Command::Sweep(args) => return sweep_cases::run_sweep(args).into(),
+        Command::Converge(args) => return sweep_cases::run_converge(args).into(),
         Command::Resume(args) => resume::run_resume(args),
         cmd => run::run_case(cmd),
     };
