@@ -35,7 +35,14 @@ fn branch(dir: &Path, name: &str, extra: &[&str]) -> std::process::Output {
     let (csv, ckpt) = (format!("{name}.csv"), format!("{name}.ckpt"));
     let (json, from) = (format!("{name}.json"), "cut.csv".to_string());
     let mut args = vec!["resume", "branch.ckpt", "-q", "--no-save", "--csv", &csv];
-    args.extend(["--csv-from", &from, "--summary", &json, "--checkpoint", &ckpt]);
+    args.extend([
+        "--csv-from",
+        &from,
+        "--summary",
+        &json,
+        "--checkpoint",
+        &ckpt,
+    ]);
     args.extend(extra);
     run(dir, &args)
 }
@@ -48,7 +55,10 @@ fn thetadot(dir: &Path, name: &str) -> Vec<(f64, f64)> {
     let w = header.iter().position(|h| *h == "thetadot").unwrap();
     lines
         .map(|l| {
-            let f: Vec<f64> = l.split(',').map(|v| v.parse().unwrap_or(f64::NAN)).collect();
+            let f: Vec<f64> = l
+                .split(',')
+                .map(|v| v.parse().unwrap_or(f64::NAN))
+                .collect();
             (f[0], f[w])
         })
         .collect()
@@ -60,7 +70,10 @@ fn a_branch_is_the_resume_plus_its_perturbation() {
     stopped(&dir, 400);
     expect_code(&branch(&dir, "plain", &[]), 0);
     expect_code(&branch(&dir, "zero", &["--perturb-omega", "0"]), 0);
-    assert!(read(&dir, "plain.csv") == read(&dir, "zero.csv"), "zero: the plain resume");
+    assert!(
+        read(&dir, "plain.csv") == read(&dir, "zero.csv"),
+        "zero: the plain resume"
+    );
     expect_code(&branch(&dir, "up", &["--perturb-omega", "1e-3"]), 0);
     let (plain, up) = (thetadot(&dir, "plain.csv"), thetadot(&dir, "up.csv"));
     assert_eq!(plain.len(), up.len());
@@ -87,7 +100,10 @@ fn bad_branches_are_refused_in_one_line() {
         let err = String::from_utf8_lossy(&out.stderr);
         let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
         assert_eq!(lines.len(), 1, "one line: {err}");
-        assert!(lines[0].starts_with("error: ") && lines[0].contains(what), "{err}");
+        assert!(
+            lines[0].starts_with("error: ") && lines[0].contains(what),
+            "{err}"
+        );
         assert!(lines[0].contains("accepted a finite number"), "{err}");
     }
     assert!(!dir.join("bad.csv").exists());

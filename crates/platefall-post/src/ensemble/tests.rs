@@ -68,7 +68,10 @@ fn pooled_intervals_of_ar1_members_cover_the_true_mean_95_percent_of_the_time() 
     );
     assert!((c - LEVEL).abs() < tolerance(LEVEL, runs), "coverage {c}");
     // The combined interval exists where the F test finds the members consistent (95 %).
-    assert!(combined >= runs * 9 / 10, "combined in {combined} of {runs}");
+    assert!(
+        combined >= runs * 9 / 10,
+        "combined in {combined} of {runs}"
+    );
     assert!(
         (cc - LEVEL).abs() < tolerance(LEVEL, combined),
         "combined coverage {cc}"
@@ -88,10 +91,7 @@ fn independent_members_pass_the_independence_check_95_percent_of_the_time() {
     }
     let rate = consistent as f64 / runs as f64;
     eprintln!("independent members judged consistent: {rate:.3}");
-    assert!(
-        (rate - LEVEL).abs() < tolerance(LEVEL, runs),
-        "rate {rate}"
-    );
+    assert!((rate - LEVEL).abs() < tolerance(LEVEL, runs), "rate {rate}");
 }
 
 #[test]
@@ -148,16 +148,22 @@ fn too_few_or_non_finite_members_give_no_interval() {
         pool(&one),
         Err(NoEnsembleInterval::TooFewMembers { have: 1 })
     );
-    let nan = [one[0], MemberEstimate {
-        mean: f64::NAN,
-        own: None,
-    }];
+    let nan = [
+        one[0],
+        MemberEstimate {
+            mean: f64::NAN,
+            own: None,
+        },
+    ];
     assert_eq!(pool(&nan), Err(NoEnsembleInterval::NotFinite));
     // Without the members' own intervals: the between-member interval alone.
-    let two = [one[0], MemberEstimate {
-        mean: 3.0,
-        own: None,
-    }];
+    let two = [
+        one[0],
+        MemberEstimate {
+            mean: 3.0,
+            own: None,
+        },
+    ];
     let e = pool(&two).unwrap();
     // m̄ = 2, s = √2, se = 1, t(0.975; 1) = 12.706.
     assert!((e.mean - 2.0).abs() < 1e-15 && (e.half_width - 12.7062).abs() < 1e-3);
@@ -209,7 +215,10 @@ fn members_of_the_logistic_map_decorrelate_as_its_lyapunov_exponent_says() {
     found.sort_by(f64::total_cmp);
     eprintln!("decorrelation steps {found:?}, expected {expected:.1}");
     let median = found[found.len() / 2];
-    assert!((median - expected).abs() <= 3.0, "median {median} vs {expected}");
+    assert!(
+        (median - expected).abs() <= 3.0,
+        "median {median} vs {expected}"
+    );
     assert!(found.iter().all(|t| (t - expected).abs() <= 8.0));
     let d = decorrelation(&times, &vec![logistic(0.3, steps); 2], 3).unwrap();
     assert!(!d.allows(100.0));
@@ -233,7 +242,10 @@ fn equal_means_are_separated_5_percent_of_the_time_and_distant_ones_always() {
     let mut b = ensemble(&mut rng, 8, 1000);
     b.iter_mut().for_each(|m| m.mean += 1.0);
     let s = separation(&pool(&b).unwrap(), &a);
-    assert!(s.resolved && (s.difference - 1.0).abs() < s.half_width, "{s:?}");
+    assert!(
+        s.resolved && (s.difference - 1.0).abs() < s.half_width,
+        "{s:?}"
+    );
 }
 
 #[test]
@@ -258,12 +270,19 @@ fn planned_members_reach_the_requested_half_width() {
     assert!((plan.expected_half_width - w(m)).abs() < 1e-12);
     let runs = 400;
     let width: f64 = (0..runs)
-        .map(|_| pool(&ensemble(&mut rng, plan.members, 4000)).unwrap().half_width)
+        .map(|_| {
+            pool(&ensemble(&mut rng, plan.members, 4000))
+                .unwrap()
+                .half_width
+        })
         .sum::<f64>()
         / runs as f64;
     let c4 = (2.0 / (m - 1.0)).sqrt()
         * (crate::stats::ln_gamma(m / 2.0) - crate::stats::ln_gamma((m - 1.0) / 2.0)).exp();
-    eprintln!("plan {plan:?}: mean half-width {width:.4}, expected {:.4}", c4 * w(m));
+    eprintln!(
+        "plan {plan:?}: mean half-width {width:.4}, expected {:.4}",
+        c4 * w(m)
+    );
     assert!((width / (c4 * w(m)) - 1.0).abs() < 0.03, "{width}");
     // A measured pilot of 30 members (s within ±13 % of σ, one deviation) plans nearly the
     // same: M within ±40 % (three deviations of s, squared).
