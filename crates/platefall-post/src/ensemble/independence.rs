@@ -8,7 +8,7 @@
 //! own variance, once they have parted), ρ_k = 1 − s²_k/σ² is smoothed by a centred running mean,
 //! and the decorrelation time is the first time at which it falls below
 //! [`DECORRELATED`] = e⁻² (two e-folds). Each member's window of averaging should start after it.
-//! The test of the members' means themselves is [`super::Consistency`].
+//! The test of the members' means themselves is [`super::pool::Consistency`].
 use serde::Serialize;
 
 /// The between-member correlation below which the members count as decorrelated (e⁻²).

@@ -10,8 +10,8 @@
 //!   t(0.975; n_eff L'/L − 1) · se √(L/L') ≤ the target; "run about L' − L more".
 use serde::Serialize;
 
-use super::super::stats::{t95, Interval};
-use super::{EnsembleInterval, MIN_MEMBERS};
+use super::pool::{EnsembleInterval, MIN_MEMBERS};
+use crate::stats::{t95, Interval};
 
 /// Members beyond which the planner gives up (the target is out of reach).
 pub const MAX_MEMBERS: usize = 100_000;

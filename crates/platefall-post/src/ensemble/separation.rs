@@ -7,8 +7,8 @@
 //! excludes zero.
 use serde::Serialize;
 
-use super::super::stats::t95;
-use super::EnsembleInterval;
+use super::pool::EnsembleInterval;
+use crate::stats::t95;
 
 /// The difference of two ensembles' means and whether it is resolved.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

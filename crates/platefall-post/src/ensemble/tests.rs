@@ -2,7 +2,7 @@
 //! independence check, decorrelation, separation and planner against what they must give.
 use super::*;
 use crate::rng::Rng;
-use crate::stats::series_interval;
+use crate::stats::{series_interval, t95, LEVEL};
 
 /// AR(1) with φ = 0.8: integrated autocorrelation time (1 + φ)/(1 − φ) = 9 samples.
 const PHI: f64 = 0.8;
