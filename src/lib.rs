@@ -14,6 +14,7 @@
 pub mod cli;
 
 mod bench;
+pub mod build_info;
 mod exit;
 mod pool;
 mod sweep;

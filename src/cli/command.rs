@@ -7,7 +7,9 @@ use clap::{Parser, Subcommand};
 use super::args::{ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs};
 use super::bench_args::BenchArgs;
 use super::converge_args::ConvergeArgs;
+use super::info::InfoArgs;
 use super::record_args::RecordArgs;
+use super::reproduce::ReproduceArgs;
 use super::resume::ResumeArgs;
 use super::sweep_args::SweepArgs;
 use crate::exit::Exit;
@@ -20,7 +22,7 @@ use crate::exit::Exit;
 #[derive(Parser, Debug)]
 #[command(
     name = "platefall",
-    version,
+    version = crate::build_info::VERSION,
     about,
     long_about,
     propagate_version = true,
@@ -60,6 +62,13 @@ pub enum Command {
     /// Ctrl-C), exactly as if it had not stopped; or extend a completed one (--t-end, --turns).
     #[command(after_help = Exit::help(false))]
     Resume(ResumeArgs),
+    /// What a recording is: the run's title, the program and commit that made it, its command
+    /// line, input files, steps, report (and with --json its configuration and summary).
+    Info(InfoArgs),
+    /// Run a recording's run again from the recording alone (its arguments and input files) and
+    /// compare every recorded step with it bit for bit: "identical", or the first step, time and
+    /// quantity where they part, with both values.
+    Reproduce(ReproduceArgs),
 }
 
 impl Command {
@@ -71,9 +80,12 @@ impl Command {
             Command::Forced(a) => Some((&a.solver, &a.record)),
             Command::Pinned(a) => Some((&a.solver, &a.record)),
             Command::Free(a) => Some((&a.solver, &a.record)),
-            Command::Bench(_) | Command::Sweep(_) | Command::Converge(_) | Command::Resume(_) => {
-                None
-            }
+            Command::Bench(_)
+            | Command::Sweep(_)
+            | Command::Converge(_)
+            | Command::Resume(_)
+            | Command::Info(_)
+            | Command::Reproduce(_) => None,
         }
     }
 }

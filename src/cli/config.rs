@@ -16,6 +16,8 @@ pub fn run_config(cmd: &Command) -> Result<ValidatedConfig, ArgError> {
         Command::Sweep(_) => return Err(ArgError::NotACase("sweep")),
         Command::Converge(_) => return Err(ArgError::NotACase("converge")),
         Command::Resume(_) => return Err(ArgError::NotACase("resume")),
+        Command::Info(_) => return Err(ArgError::NotACase("info")),
+        Command::Reproduce(_) => return Err(ArgError::NotACase("reproduce")),
     };
     if let Some((solver, _)) = cmd.case_args() {
         check_whole(Param::Threads, solver.threads, 0, 256)?;

@@ -5,7 +5,9 @@
 //!
 //! Files, each using only those after it: `command` (the grammar), `config` (a case's run),
 //! `run` (running it), `sweep_args` and `sweep_cases` (the sweep's options and what it needs to
-//! know of the case subcommands), `converge_args` (a refinement study's options), `bench_args`,
+//! know of the case subcommands), `converge_args` (a refinement study's options), `info` and
+//! `reproduce` (reading a recording back; `provenance`: what a run records of how it was started;
+//! `shell`: command lines quoted for the shell), `bench_args`,
 //! `args`, `plate_args` and `shape_args` (the case options: solver, plate, section),
 //! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
 mod args;
@@ -15,12 +17,16 @@ mod command;
 mod config;
 mod converge_args;
 mod flags;
+mod info;
 mod limits;
 mod plate_args;
+mod provenance;
 mod record_args;
+mod reproduce;
 mod resume;
 mod run;
 mod shape_args;
+mod shell;
 mod signals;
 mod sweep_args;
 mod sweep_cases;
@@ -60,6 +66,8 @@ pub fn main() -> ExitCode {
         Command::Sweep(args) => return sweep_args::run(args).into(),
         Command::Converge(args) => return converge_args::run(args).into(),
         Command::Resume(args) => resume::run_resume(args),
+        Command::Info(args) => info::run_info(args),
+        Command::Reproduce(args) => return reproduce::run_reproduce(args),
         cmd => run::run_case(cmd),
     };
     match result {

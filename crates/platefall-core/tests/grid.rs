@@ -13,7 +13,11 @@ fn x_stretching_matches_the_dissertation() {
         "outer dx = {}",
         g.outer_spacing().0
     );
-    assert_eq!(g.nx + 1, 65, "the dissertation's grid has 65 points along x");
+    assert_eq!(
+        g.nx + 1,
+        65,
+        "the dissertation's grid has 65 points along x"
+    );
 }
 
 #[test]

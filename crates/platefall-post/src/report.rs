@@ -151,7 +151,10 @@ fn forced_part(omega: f64, sum: &Summary, r: &mut String) -> Vec<Row> {
         (2.0, "5.8", "1.0", "≈ neutral"),
         (4.0, "9.5", "0.75", "retarding"),
     ];
-    let Some((_, cl, lag, m)) = reference.iter().find(|(k, ..)| (omega.abs() - k).abs() < 1e-9) else {
+    let Some((_, cl, lag, m)) = reference
+        .iter()
+        .find(|(k, ..)| (omega.abs() - k).abs() < 1e-9)
+    else {
         return Vec::new();
     };
     let sense = sum.mean_cm.map(|m| {
