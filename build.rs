@@ -1,5 +1,5 @@
 //! Names the commit the program is built from, for `platefall --version`, the summaries and the
-//! recordings (`src/build_info.rs`): `PLATEFALL_COMMIT` is "commit " and the commit's hash, with
+//! recordings (`src/version.rs`): `PLATEFALL_COMMIT` is "commit " and the commit's hash, with
 //! ", modified" when the work tree differs from it; from a `git archive` source archive, the hash that
 //! `commit.txt` received on export; otherwise "commit unknown".
 use std::path::{Path, PathBuf};

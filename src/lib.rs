@@ -10,11 +10,13 @@
 //!    `viewer`) everything Rerun.
 //! 4. this crate — [`cli`], the command line (the only layer that knows clap), above the sweep
 //!    (parameter sweeps: many runs of this program, locally or as a Slurm job array), the bench,
-//!    the worker pool and the exit codes.
+//!    the worker pool, the exit codes and the program's version.
+#![warn(missing_docs)]
+
 pub mod cli;
 
 mod bench;
-pub mod build_info;
 mod exit;
 mod pool;
 mod sweep;
+pub mod version;

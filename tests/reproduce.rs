@@ -7,7 +7,7 @@ mod record_common;
 use std::path::Path;
 use std::process::Command;
 
-use platefall::build_info::program_and_commit;
+use platefall::version::program_and_commit;
 use platefall_core::sim::{FieldSnapshot, Observer, Simulation, StepSample};
 use platefall_record::messages::{RunInfo, RunOutcome};
 use platefall_record::provenance::{Invocation, INVOCATION_FORMAT};

@@ -10,7 +10,7 @@ use super::converge_args::ConvergeArgs;
 use super::info::InfoArgs;
 use super::record_args::RecordArgs;
 use super::reproduce::ReproduceArgs;
-use super::resume::ResumeArgs;
+use super::resume_args::ResumeArgs;
 use super::sweep_args::SweepArgs;
 use crate::exit::Exit;
 
@@ -22,7 +22,7 @@ use crate::exit::Exit;
 #[derive(Parser, Debug)]
 #[command(
     name = "platefall",
-    version = crate::build_info::VERSION,
+    version = crate::version::VERSION,
     about,
     long_about,
     propagate_version = true,

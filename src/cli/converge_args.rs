@@ -4,9 +4,8 @@ use std::path::PathBuf;
 use clap::{Args, Subcommand};
 
 use super::sweep_args::ProgressMode;
-use super::sweep_cases::CommandLineCases;
 use crate::exit::Exit;
-use crate::sweep::converge::{self, ConvergeRequest};
+use crate::sweep::converge::ConvergeRequest;
 
 const AFTER_HELP: &str = "\
 Example (the card's free fall, its plate 1/64 chord thick at every N, averaged over turns 11-30):
@@ -72,7 +71,7 @@ pub enum ConvergeAction {
 
 impl ConvergeArgs {
     /// The study's request (clap has checked that `--refine` and `--output` are given).
-    fn request(&self) -> ConvergeRequest {
+    pub(super) fn request(&self) -> ConvergeRequest {
         match &self.action {
             Some(ConvergeAction::Collect { dir }) => ConvergeRequest::Collect { dir: dir.clone() },
             None => ConvergeRequest::Run {
@@ -85,9 +84,4 @@ impl ConvergeArgs {
             },
         }
     }
-}
-
-/// Runs `platefall converge ...`.
-pub fn run(args: &ConvergeArgs) -> Exit {
-    converge::main(&args.request(), &CommandLineCases)
 }

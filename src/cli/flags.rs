@@ -105,7 +105,7 @@ fn input_message(e: &InputError) -> String {
             format!("{} {value} is not accepted: {why}", flag(*param))
         }
         InputError::Missing { param, why } => format!("{} is required {why}", flag(*param)),
-        InputError::MissingPlate => e.to_string(),
+        InputError::MissingPlate | InputError::Conflict { .. } => e.to_string(),
         InputError::Shape(s) => format!("{}: {s}", flag(s.param())),
         InputError::TooThin { .. } => format!("{}: {e}", flag(Param::Resolution)),
     }

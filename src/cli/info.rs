@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::shell::shell_line;
-use crate::build_info::program_and_commit;
+use crate::version::program_and_commit;
 use crate::exit::Exit;
 use platefall_record::recorded::Recorded;
 use platefall_record::viewer::read_recording;

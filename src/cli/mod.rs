@@ -24,6 +24,7 @@ mod provenance;
 mod record_args;
 mod reproduce;
 mod resume;
+mod resume_args;
 mod run;
 mod shape_args;
 mod shell;
@@ -49,7 +50,7 @@ pub fn case_config(args: &[String]) -> Result<platefall_core::sim::ValidatedConf
 
 /// The program and version that checkpoints record, e.g. "platefall 0.1.0".
 pub fn program_version() -> String {
-    run::version()
+    crate::version::program_version()
 }
 
 #[cfg(test)]
@@ -63,8 +64,8 @@ pub fn main() -> ExitCode {
     };
     let result = match &cli.command {
         Command::Bench(args) => bench_args::run_bench(args).map(|()| Exit::Completed),
-        Command::Sweep(args) => return sweep_args::run(args).into(),
-        Command::Converge(args) => return converge_args::run(args).into(),
+        Command::Sweep(args) => return sweep_cases::run_sweep(args).into(),
+        Command::Converge(args) => return sweep_cases::run_converge(args).into(),
         Command::Resume(args) => resume::run_resume(args),
         Command::Info(args) => info::run_info(args),
         Command::Reproduce(args) => return reproduce::run_reproduce(args),

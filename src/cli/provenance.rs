@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::command::Command;
-use crate::build_info::program_and_commit;
+use crate::version::program_and_commit;
 use platefall_post::summary::Summary;
 use platefall_record::provenance::{InputFile, Invocation};
 

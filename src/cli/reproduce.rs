@@ -12,7 +12,7 @@ use anyhow::Context as _;
 use clap::Args;
 
 use super::shell::shell_line;
-use crate::build_info::program_and_commit;
+use crate::version::program_and_commit;
 use crate::exit::Exit;
 use platefall_core::sim::{FieldSnapshot, History, Observer, Simulation, StepSample};
 use platefall_record::provenance::Invocation;

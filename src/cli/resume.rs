@@ -6,72 +6,22 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
-use clap::Args;
 
-use super::args::CheckpointArgs;
 use super::checkpointer::Checkpointer;
 use super::command::{parse, Command};
 use super::config::run_config;
 use super::record_args::RecordArgs;
-use super::run::{command_line, execute, version, Started};
+use super::resume_args::ResumeArgs;
+use super::run::{command_line, execute, Started};
 use super::signals::Interrupts;
-use crate::build_info::program_and_commit;
+use crate::version::program_and_commit;
 use crate::exit::Exit;
+use crate::version::program_version as version;
 use platefall_core::sim::{CaseKind, Simulation, ValidatedConfig};
 use platefall_record::checkpoint::{read_checkpoint, Checkpoint, ResumeInfo};
 use platefall_record::messages::RunInfo;
 use platefall_record::provenance::Invocation;
 use platefall_record::RecordOptions;
-
-/// `platefall resume`'s options (the checkpoint options are a case run's, with resume's defaults).
-#[derive(Args, Debug, Clone)]
-#[command(
-    mut_arg("checkpoint_every", |a| a.help("Checkpoint cadence [default: the run's]")),
-    mut_arg("checkpoint", |a| a.help("The checkpoint file to write [default: the one resumed from]"))
-)]
-pub struct ResumeArgs {
-    /// The checkpoint file (written by --checkpoint-every or at a stop)
-    pub file: PathBuf,
-    /// A new end time (later than the checkpoint's time) [default: the run's]
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
-    pub t_end: Option<f64>,
-    /// A new number of net turns after release [default: the run's]
-    #[arg(long, value_name = "N")]
-    pub turns: Option<f64>,
-    /// Worker threads (0: one per core) [default: the run's]; the results do not depend on it
-    #[arg(long)]
-    pub threads: Option<usize>,
-    /// The CSV [default: the run's; it is rewritten with the earlier rows first]
-    #[arg(long, value_name = "FILE")]
-    pub csv: Option<PathBuf>,
-    /// Take the earlier rows from this CSV: the `.NAME.partial-PID` file of a run that was
-    /// killed outright (it holds the rows up to its last checkpoint) [default: the run's CSV]
-    #[arg(long, value_name = "FILE")]
-    pub csv_from: Option<PathBuf>,
-    /// The continuation recording [default: the run's with -from-STEP before .rrd]
-    #[arg(long, value_name = "FILE.rrd", conflicts_with = "no_save")]
-    pub save: Option<PathBuf>,
-    /// No continuation recording
-    #[arg(long)]
-    pub no_save: bool,
-    /// The summary JSON [default: the run's]
-    #[arg(long, value_name = "FILE")]
-    pub summary: Option<PathBuf>,
-    /// No progress output
-    #[arg(long, short = 'q')]
-    pub quiet: bool,
-    // --checkpoint-every, --checkpoint: a case run's options, with resume's defaults (above).
-    #[command(flatten)]
-    pub checkpoint: CheckpointArgs,
-}
-
-impl ResumeArgs {
-    /// The checkpoint file to write: `--checkpoint`, else the one resumed from.
-    fn checkpoint_out(&self) -> PathBuf {
-        let given = self.checkpoint.checkpoint.as_ref();
-        given.unwrap_or(&self.file).clone()
-    }
-}
 
 /// Why a checkpoint cannot be resumed as asked (besides a bad file).
 #[derive(Debug, thiserror::Error)]

@@ -14,6 +14,7 @@ use super::limits::check_limits;
 use super::record_args::RecordArgs;
 use super::signals::{Interrupts, Phase};
 use crate::exit::Exit;
+use crate::version::program_version as version;
 use platefall_core::sim::{
     CaseKind, FieldSnapshot, History, Observer, RunRecord, RunStatus, Simulation, StepSample,
     ValidatedConfig,
@@ -255,11 +256,6 @@ fn print_report(text: &str, log_report: Option<&LoggerReport>) {
         eprintln!("{line}");
     }
     std::io::stdout().flush().ok();
-}
-
-/// The program and its version, for the recording.
-pub(super) fn version() -> String {
-    format!("platefall {}", env!("CARGO_PKG_VERSION"))
 }
 
 /// What the solver loop polls besides the logger: the stop flag, the checkpoints, the test hook.

@@ -3,7 +3,6 @@ use std::path::PathBuf;
 
 use clap::{Args, Subcommand, ValueEnum};
 
-use super::sweep_cases::CommandLineCases;
 use crate::exit::Exit;
 use crate::sweep::{self, SlurmOverrides, SweepRequest};
 
@@ -124,7 +123,7 @@ impl From<ProgressMode> for sweep::ProgressMode {
 
 impl SweepArgs {
     /// The sweep's request.
-    fn request(&self) -> Result<SweepRequest, String> {
+    pub(super) fn request(&self) -> Result<SweepRequest, String> {
         Ok(match &self.action {
             Some(SweepAction::Collect { dir }) => SweepRequest::Collect { dir: dir.clone() },
             Some(SweepAction::RunCase { dir, index }) => SweepRequest::RunCase {
@@ -153,16 +152,5 @@ impl SweepArgs {
                 }),
             },
         })
-    }
-}
-
-/// Runs `platefall sweep ...`.
-pub fn run(args: &SweepArgs) -> Exit {
-    match args.request() {
-        Ok(request) => sweep::main(&request, &CommandLineCases),
-        Err(message) => {
-            eprintln!("error: {message}");
-            Exit::BadInput
-        }
     }
 }

@@ -1,11 +1,16 @@
 //! What the sweep needs to know of the case subcommands, answered by the command line: the
 //! options each one takes (clap's own definitions), and the run an argument vector describes
 //! (parsed and validated exactly as a typed command line; it is the argument vector the case's
-//! child process is started with).
+//! child process is started with); and running `platefall sweep` and `platefall converge` with
+//! those answers.
 use clap::CommandFactory;
 
 use super::command::{parse, Cli};
 use super::config::run_config;
+use super::converge_args::ConvergeArgs;
+use super::sweep_args::SweepArgs;
+use crate::exit::Exit;
+use crate::sweep::{self, converge};
 use crate::sweep::{CaseCommands, OptionInfo, PlanError};
 use platefall_core::sim::{CaseKind, ValidatedConfig};
 
@@ -52,4 +57,20 @@ fn clap_one_line(e: &clap::Error) -> String {
         Some(tip) => format!("{first} ({tip})"),
         None => first.to_string(),
     }
+}
+
+/// Runs `platefall sweep ...`.
+pub fn run_sweep(args: &SweepArgs) -> Exit {
+    match args.request() {
+        Ok(request) => sweep::main(&request, &CommandLineCases),
+        Err(message) => {
+            eprintln!("error: {message}");
+            Exit::BadInput
+        }
+    }
+}
+
+/// Runs `platefall converge ...`.
+pub fn run_converge(args: &ConvergeArgs) -> Exit {
+    converge::main(&args.request(), &CommandLineCases)
 }

@@ -95,7 +95,8 @@ enum Start {
 /// it left its CSV under the temporary name of its process (`last`'s pid), which holds the rows
 /// up to its last checkpoint. Otherwise it starts again.
 fn start_of(layout: &Layout, id: &str, last: Option<&CaseStatus>) -> Start {
-    let Ok(ckpt) = read_checkpoint(&layout.checkpoint(id), &crate::cli::program_version()) else {
+    let Ok(ckpt) = read_checkpoint(&layout.checkpoint(id), &crate::version::program_version())
+    else {
         return Start::Fresh;
     };
     let (csv, steps) = (layout.csv(id), ckpt.sim.flow.steps);

@@ -11,10 +11,10 @@ use super::layout::{difference, lock, prepare, read_manifest, Layout, Manifest};
 use super::options::CaseCommands;
 use super::plan::{self, CaseSpec, Plan};
 use super::progress::{Progress, ProgressMode};
+use super::request::SweepRequest;
 use super::results::{gather, not_completed, outcome, tally, write_tables};
 use super::runner::{interrupt_counter, run_pool};
 use super::slurm::submit_script;
-use super::SweepRequest;
 use crate::exit::Exit;
 use platefall_post::phase::CaseState;
 

@@ -2,7 +2,7 @@
 //! through the recording crate's atomic outputs like every other output of platefall.
 use std::path::Path;
 
-use super::plan::PlanError;
+use super::plan_error::PlanError;
 use crate::exit::Exit;
 use platefall_record::output::{write_atomically, OutputError};
 

@@ -5,7 +5,7 @@ use platefall_core::sim::{CaseKind, RunConfig, RunRecord, RunStatus, ValidatedCo
 use platefall_post::summary::summarize;
 
 use super::json;
-use super::plan::PlanError;
+use super::plan_error::PlanError;
 
 /// Options the sweep sets itself for every case; a plan may not set them.
 pub(crate) const MANAGED: [&str; 15] = [

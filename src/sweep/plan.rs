@@ -7,22 +7,11 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use super::options::{CaseCommands, OptionInfo, MANAGED};
-use super::slurm::{time_limit_seconds, DEFAULT_TIME};
+use super::slurm_time::{time_limit_seconds, DEFAULT_TIME};
 use super::values::{describe, expand, one_line, Scale, Value};
 use platefall_core::sim::CaseKind;
 
-/// A plan that cannot run: one line naming the value and what is accepted (exit 2).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub(crate) struct PlanError(pub(crate) String);
-
-/// A [`PlanError`] from a format string.
-macro_rules! plan_err {
-    ($($t:tt)*) => {
-        PlanError(format!($($t)*))
-    };
-}
-pub(crate) use plan_err;
+pub(crate) use super::plan_error::{plan_err, PlanError};
 
 /// `[outputs]`: what each case writes besides its summary, CSV and log.
 #[derive(Clone, Copy, Debug, Default, Deserialize, Serialize, PartialEq)]

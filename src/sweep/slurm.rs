@@ -5,6 +5,7 @@ use super::child::{is_done, this_exe};
 use super::failure::{write_output, Failure};
 use super::layout::{prepare, Layout};
 use super::plan::{check_slurm, CaseSpec, Plan, SlurmPlan};
+use super::slurm_time::{time_limit_seconds, DEFAULT_TIME};
 use crate::exit::Exit;
 
 /// Resources of each array task given on the command line (they override the plan's).
@@ -39,8 +40,7 @@ impl SlurmOverrides {
     }
 }
 
-/// Resources when neither the plan nor a flag gives them.
-pub(crate) const DEFAULT_TIME: &str = "01:00:00";
+/// Resources when neither the plan nor a flag gives them (the time: [`DEFAULT_TIME`]).
 const DEFAULT_MEMORY: &str = "2G";
 /// The signal lead when the plan gives none and the time limit is long: two minutes to stop
 /// after the current step and write the checkpoint and the outputs.
@@ -81,34 +81,6 @@ pub(crate) fn array_spec(indices: &[usize]) -> String {
         i += 1;
     }
     parts.join(",")
-}
-
-/// A time limit as sbatch's `--time` takes it, in seconds rounded up to whole minutes as Slurm
-/// does: `Some(None)` for no limit (UNLIMITED, INFINITE, 0), None when Slurm would not read it.
-pub(crate) fn time_limit_seconds(time: &str) -> Option<Option<u64>> {
-    if ["unlimited", "infinite", "-1"].contains(&time.to_ascii_lowercase().as_str()) {
-        return Some(None);
-    }
-    let number = |s: &str| {
-        (!s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()))
-            .then(|| s.parse::<u64>().ok())
-            .flatten()
-    };
-    let (days, clock) = match time.split_once('-') {
-        Some((d, rest)) => (Some(number(d)?), rest),
-        None => (None, time),
-    };
-    let parts: Vec<u64> = clock.split(':').map(number).collect::<Option<_>>()?;
-    let seconds = match (days, parts.as_slice()) {
-        (None, [m]) => m * 60,
-        (None, [m, s]) => m * 60 + s,
-        (None, [h, m, s]) => h * 3600 + m * 60 + s,
-        (Some(d), [h]) => d * 86400 + h * 3600,
-        (Some(d), [h, m]) => d * 86400 + h * 3600 + m * 60,
-        (Some(d), [h, m, s]) => d * 86400 + h * 3600 + m * 60 + s,
-        _ => return None,
-    };
-    Some((seconds > 0).then(|| seconds.div_ceil(60) * 60))
 }
 
 /// Seconds before the time limit at which Slurm warns the task with SIGUSR1: the plan's

@@ -2,7 +2,7 @@
 //! value is written on a command line and in a case id.
 use serde::{Deserialize, Serialize};
 
-use super::plan::{plan_err, PlanError};
+use super::plan_error::{plan_err, PlanError};
 pub(crate) use platefall_post::phase::Scale;
 
 /// One value of an option, as written in the plan.

@@ -41,7 +41,12 @@ pub enum Stretch {
     /// As few intervals as keep the cell growth ratio at or below this cap (e.g. 1.04).
     GrowthCap(f64),
     /// Exactly this many intervals in x and in y (the dissertation's style: 24 and 27).
-    Intervals { nx: usize, ny: usize },
+    Intervals {
+        /// Intervals of each stretched patch in x.
+        nx: usize,
+        /// Intervals of each stretched patch in y.
+        ny: usize,
+    },
 }
 
 impl GridSpec {
@@ -94,56 +99,6 @@ impl GridSpec {
             }
         }
         Ok(())
-    }
-}
-
-impl GridSpec {
-    /// Refuses a plate thinner somewhere than the grid can follow at this resolution (a grid face
-    /// that would see fluid on both sides of the plate), naming the smallest resolution that
-    /// follows it. A rectangle is followed at every resolution (the grid is fitted to it).
-    pub fn check_representable(&self) -> Result<(), InputError> {
-        if self.shape.fits_grid() {
-            return Ok(());
-        }
-        let defect = |spec: &GridSpec| {
-            Grid::new(spec)
-                .ok()
-                .and_then(|g| crate::flow::wall::first_defect(&g))
-        };
-        let Some(at) = defect(self) else {
-            return Ok(());
-        };
-        let with = |n: usize| GridSpec {
-            resolution: n,
-            ..self.clone()
-        };
-        // Up in steps of a quarter to the first resolution that works, then back to the smallest.
-        let mut hi = self.resolution;
-        let found = loop {
-            hi = ((hi as f64 * 1.25).ceil() as usize).min(1024);
-            if defect(&with(hi)).is_none() {
-                break Some(hi);
-            }
-            if hi >= 1024 {
-                break None;
-            }
-        };
-        let smallest = match found {
-            Some(hi) => {
-                let n = (self.resolution + 1..hi)
-                    .find(|&n| defect(&with(n)).is_none())
-                    .unwrap_or(hi);
-                format!("the smallest resolution that follows it is {n} (--resolution {n})")
-            }
-            None => "no resolution up to 1024 follows it; give the section a thicker part there"
-                .to_string(),
-        };
-        Err(InputError::TooThin {
-            resolution: self.resolution,
-            x: at[0],
-            y: at[1],
-            smallest,
-        })
     }
 }
 
@@ -215,11 +170,15 @@ pub fn stretched_offsets(h: f64, length: f64, n: usize) -> Vec<f64> {
     }
 }
 
-/// The grid with all the metrics the solver needs. Cell (i, j) spans [xn[i], xn[i+1]] × [yn[j], yn[j+1]].
+/// The grid with all the metrics the solver needs. Cell (i, j) spans
+/// `[xn[i], xn[i+1]] × [yn[j], yn[j+1]]`.
 #[derive(Clone, Debug)]
 pub struct Grid {
+    /// The description it was built from.
     pub spec: GridSpec,
+    /// Cells along x.
     pub nx: usize,
+    /// Cells along y.
     pub ny: usize,
     /// Uniform core spacing h = 1/N.
     pub h: f64,
@@ -227,23 +186,33 @@ pub struct Grid {
     pub thickness: f64,
     /// The plate's outline (None for a grid without a plate, for verification).
     pub body: Option<Outline>,
+    /// Node (cell-face) x coordinates, length nx + 1, increasing.
     pub xn: Vec<f64>,
+    /// Node (cell-face) y coordinates, length ny + 1, increasing.
     pub yn: Vec<f64>,
-    /// Cell centres and widths.
+    /// Cell-centre x coordinates, length nx.
     pub xc: Vec<f64>,
+    /// Cell-centre y coordinates, length ny.
     pub yc: Vec<f64>,
+    /// Cell widths along x, length nx.
     pub dx: Vec<f64>,
+    /// Cell heights along y, length ny.
     pub dy: Vec<f64>,
-    /// The core (the box bounding the plate) is cells i0..i1 × j0..j1.
+    /// The core (the box bounding the plate) is cells i0..i1 × j0..j1: its first column.
     pub i0: usize,
+    /// One past the core's last column.
     pub i1: usize,
+    /// The core's first row.
     pub j0: usize,
+    /// One past the core's last row.
     pub j1: usize,
-    /// Stretching coefficients C_x, C_y of the patches (None if a patch needed no stretching).
+    /// Stretching coefficient C of the x patches (None if they needed no stretching).
     pub cx: Option<f64>,
+    /// Stretching coefficient C of the y patches (None if they needed no stretching).
     pub cy: Option<f64>,
-    /// Number of stretched intervals in x and y on each side.
+    /// Number of stretched intervals in x on each side.
     pub nsx: usize,
+    /// Number of stretched intervals in y on each side.
     pub nsy: usize,
 }
 
@@ -334,7 +303,7 @@ impl Grid {
     }
 
     /// Whether each cell's centre lies inside the plate or on its boundary, row-major with x
-    /// fastest (for pictures; the solver's own classification is `flow::wall`).
+    /// fastest (for pictures; the flow solver classifies the faces itself).
     pub fn solid_mask(&self) -> Vec<bool> {
         let mut m = vec![false; self.cells()];
         let Some(body) = &self.body else {
@@ -387,9 +356,12 @@ pub struct GridGeometry {
 }
 
 impl GridGeometry {
+    /// Cells along x.
     pub fn nx(&self) -> usize {
         self.xn.len() - 1
     }
+
+    /// Cells along y.
     pub fn ny(&self) -> usize {
         self.yn.len() - 1
     }

@@ -39,9 +39,6 @@ pub mod param;
 
 pub mod body;
 pub mod flow;
-// Being reworked for plate shapes (the grid spec gets a shape); its fields get their
-// documentation (and its docs' index brackets their escapes) with that work.
-#[allow(missing_docs, rustdoc::broken_intra_doc_links)]
 pub mod grid;
 pub mod sim;
 

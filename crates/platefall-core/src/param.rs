@@ -202,6 +202,17 @@ pub enum InputError {
         /// When it is needed.
         why: &'static str,
     },
+    /// A builder option that contradicts one given before it (a grid option after the
+    /// dissertation's grid, which fixes the grid and the plate).
+    #[error("{option} cannot follow {earlier}: {why}")]
+    Conflict {
+        /// The option refused, e.g. `thickness`.
+        option: &'static str,
+        /// The option it contradicts, given before it.
+        earlier: &'static str,
+        /// What the earlier option fixes.
+        why: &'static str,
+    },
     /// The plate's section cannot be built (the error names the value and what is accepted).
     #[error(transparent)]
     Shape(#[from] ShapeError),
@@ -230,9 +241,21 @@ impl InputError {
                 Some(*param)
             }
             InputError::Missing { param, .. } => Some(*param),
-            InputError::MissingPlate => None,
+            InputError::MissingPlate | InputError::Conflict { .. } => None,
             InputError::Shape(e) => Some(e.param()),
             InputError::TooThin { .. } => Some(Param::Resolution),
+        }
+    }
+}
+
+// The shapes sit below the named inputs: a shape's error learns which input it is about here.
+impl ShapeError {
+    /// The input the error is about.
+    pub fn param(&self) -> Param {
+        match self {
+            ShapeError::Thickness(_) => Param::Thickness,
+            ShapeError::EdgeRadius { .. } => Param::EdgeRadius,
+            _ => Param::Polygon,
         }
     }
 }

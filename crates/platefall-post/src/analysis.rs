@@ -2,7 +2,7 @@
 //! lift frequency (Strouhal number) and turn counting for autorotation. Pure functions on samples.
 use std::f64::consts::PI;
 
-use platefall_core::sim::StepSample;
+use platefall_core::sim::{RunConfig, StepSample};
 
 /// A time window [t0, t1] of the run.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
@@ -191,6 +191,57 @@ pub fn count_turns(samples: &[StepSample], t_release: f64) -> Turns {
     }
 }
 
+/// Mean lag (in α) of the maximum of C_D behind the maximum of C_L, per half-turn (period π in θ).
+/// For clockwise rotation the lift is taken in the rotation's own sense (−C_L): the mirror image
+/// y → −y of a counter-clockwise run turns clockwise with C_L negated and C_D unchanged.
+pub fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
+    let lags = lags_cd_behind_cl(samples, w);
+    (!lags.is_empty()).then(|| lags.iter().sum::<f64>() / lags.len() as f64)
+}
+
+/// The lag of `lag_cd_behind_cl` in each half-turn of the window.
+pub fn lags_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Vec<f64> {
+    lag_list(samples, w).unwrap_or_default()
+}
+
+fn lag_list(samples: &[StepSample], w: TimeWindow) -> Option<Vec<f64>> {
+    let inside: Vec<&StepSample> = samples
+        .iter()
+        .filter(|s| s.t >= w.t0 && s.t <= w.t1)
+        .collect();
+    let first = inside.first()?;
+    let dir = if inside.last()?.theta >= first.theta {
+        1.0
+    } else {
+        -1.0
+    };
+    let mut lags = Vec::new();
+    let mut k0 = 0;
+    for k in 1..=inside.len() {
+        let end = k == inside.len() || dir * (inside[k].theta - inside[k0].theta) >= PI;
+        if end {
+            let seg = &inside[k0..k];
+            if k < inside.len() || dir * (seg.last()?.theta - seg[0].theta) >= PI * 0.999 {
+                let a_cl = seg
+                    .iter()
+                    .max_by(|a, b| (dir * a.cl).total_cmp(&(dir * b.cl)))?
+                    .theta;
+                let a_cd = seg.iter().max_by(|a, b| a.cd.total_cmp(&b.cd))?.theta;
+                lags.push((dir * (a_cd - a_cl)).rem_euclid(PI));
+            }
+            k0 = k;
+        }
+    }
+    Some(lags)
+}
+
+/// The width of a static section at angle of attack α across the stream (chords): the length
+/// the Strouhal number on the width is based on (c|sin α| + t|cos α| for a rectangle).
+pub fn projected_width(config: &RunConfig, alpha: f64) -> f64 {
+    let (s, c) = alpha.sin_cos();
+    config.grid.shape.outline().width_across([c, -s])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -240,5 +291,40 @@ mod tests {
         let turns = count_turns(&s, 0.0);
         assert_eq!(turns.completed.len(), 3);
         assert!((turns.completed[0] - (1.0 + PI)).abs() < 2e-3);
+    }
+
+    /// A plate turning at rate `om` with C_L peaking at θ = 1.0 and C_D at θ = 1.5 (mod π) for
+    /// counter-clockwise rotation, and the mirror image (C_L negated) for clockwise rotation.
+    fn turning(om: f64) -> Vec<StepSample> {
+        let dir = om.signum();
+        (0..20000)
+            .map(|k| {
+                let t = k as f64 * 0.001;
+                let th = om * t;
+                let phase = dir * th;
+                let bump =
+                    |c: f64| (-(((phase - c).rem_euclid(PI) - PI / 2.0).powi(2)) * 8.0).exp();
+                StepSample {
+                    t,
+                    theta: th,
+                    omega: om,
+                    cl: dir * bump(1.0 - PI / 2.0 + PI),
+                    cd: bump(1.5 - PI / 2.0 + PI),
+                    ..Default::default()
+                }
+            })
+            .collect()
+    }
+
+    #[test]
+    fn lag_of_drag_behind_lift_is_the_same_for_mirror_image_rotations() {
+        let w = TimeWindow { t0: 1.0, t1: 19.0 };
+        let ccw = lag_cd_behind_cl(&turning(2.0), w).unwrap();
+        let cw = lag_cd_behind_cl(&turning(-2.0), w).unwrap();
+        assert!((ccw - 0.5).abs() < 0.01, "counter-clockwise lag {ccw}");
+        assert!(
+            (cw - ccw).abs() < 0.01,
+            "clockwise lag {cw} differs from {ccw}"
+        );
     }
 }

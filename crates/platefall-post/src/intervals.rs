@@ -23,99 +23,19 @@
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 
-use serde::Serialize;
-
-use super::analysis::{count_turns, TimeWindow};
+use super::analysis::{count_turns, lags_cd_behind_cl, projected_width, TimeWindow};
+use super::keys::Summary;
+pub use super::keys::{IntervalInfo, IntervalKeys};
 use super::regime::{cycle_events, rising_crossings, MotionClass, Regime, CROSSING_HYSTERESIS};
 use super::stats::{
     autocovariance, batch_interval, series_interval, trend, Interval, NoInterval, LEVEL,
     MIN_BATCHES,
 };
-use super::summary::Summary;
 use platefall_core::config::{physical, Units};
 use platefall_core::sim::{Case, History, Quantity, RunConfig, RunRecord, StepSample};
 
 /// Equal time bins of a window without natural cycles (the series estimator's samples).
 pub const SERIES_BINS: usize = 2000;
-
-/// One quantity's interval as the summary states it.
-#[derive(Clone, Debug, Default, PartialEq, Serialize)]
-pub struct IntervalInfo {
-    /// The summary's value the interval is about.
-    pub value: f64,
-    /// Half-width of the 95 % interval (null when there is none: see `note`).
-    pub half_width: Option<f64>,
-    /// What the observations are: "whole turns", "half-turns", "lift periods", "cycles of θ",
-    /// "half-turn durations", "time bins", ….
-    pub observations: String,
-    /// How many there were.
-    pub count: usize,
-    /// Integrated autocorrelation time of the observations (1: independent).
-    pub tau: Option<f64>,
-    /// Effective number of independent observations, count / τ.
-    pub n_eff: Option<f64>,
-    /// Degrees of freedom and the t quantile of the interval.
-    pub dof: Option<f64>,
-    pub t: Option<f64>,
-    /// Why there is no interval, or how it was derived.
-    pub note: Option<String>,
-    /// The change of the batch means over the window from their straight-line trend (slope ×
-    /// (batches − 1)), and whether the slope is significant at 95 %: a significant drift means
-    /// the window still holds a transient, so the mean depends on where the window starts.
-    pub drift: Option<f64>,
-    pub drift_significant: Option<bool>,
-    /// The lag-1 autocorrelation of the observations. Near −1 the batch means alternate: the
-    /// motion repeats every two batches (a period doubling), so the window is not a whole
-    /// number of its periods and the interval is wide (conservative) rather than wrong.
-    pub lag1: Option<f64>,
-}
-
-/// The interval keys of the summary (flattened into it): `<key>_ci95` is the half-width of the
-/// 95 % confidence interval of `<key>`, null when the run is too short for one (`ci_note` says
-/// why); `intervals` holds the details per key.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct IntervalKeys {
-    /// The confidence level of every interval (0.95).
-    pub ci_level: f64,
-    /// How the intervals were made (the batches, the estimator).
-    pub ci_method: Option<String>,
-    /// Batches of the time means (whole turns, periods …); null for the series estimator.
-    pub ci_batches: Option<usize>,
-    /// Why the time means have no interval, when they have none.
-    pub ci_note: Option<String>,
-    /// The keys whose batch means drift significantly over the window (a transient is left in
-    /// it: the mean depends on where the window starts), with the drift; null when none does.
-    pub ci_drift: Option<String>,
-    /// The keys whose batch means alternate (lag-1 autocorrelation below −0.5: the motion
-    /// repeats every two batches), with that autocorrelation; null when none does.
-    pub ci_alternating: Option<String>,
-    pub mean_cl_ci95: Option<f64>,
-    pub mean_cd_ci95: Option<f64>,
-    pub mean_cm_ci95: Option<f64>,
-    pub strouhal_chord_ci95: Option<f64>,
-    pub strouhal_width_ci95: Option<f64>,
-    pub mean_speed_ci95: Option<f64>,
-    pub mean_omega_ci95: Option<f64>,
-    pub mean_gamma_ci95: Option<f64>,
-    pub lag_cd_behind_cl_ci95: Option<f64>,
-    pub mean_speed_ft_s_ci95: Option<f64>,
-    pub mean_omega_rad_s_ci95: Option<f64>,
-    pub mean_descent_speed_ci95: Option<f64>,
-    pub mean_horizontal_speed_ci95: Option<f64>,
-    pub descent_angle_ci95: Option<f64>,
-    pub period_ci95: Option<f64>,
-    /// Mean over the oscillations of θ of half their peak-to-peak range (rad; no full turns);
-    /// `angle_amplitude` is the half range over the whole window.
-    pub mean_cycle_amplitude: Option<f64>,
-    pub mean_cycle_amplitude_ci95: Option<f64>,
-    pub mean_speed_cm_s_ci95: Option<f64>,
-    pub mean_descent_speed_cm_s_ci95: Option<f64>,
-    pub mean_horizontal_speed_cm_s_ci95: Option<f64>,
-    pub period_s_ci95: Option<f64>,
-    pub frequency_hz_ci95: Option<f64>,
-    /// Per key: the observations, τ, n_eff, the t quantile, or why there is no interval.
-    pub intervals: BTreeMap<String, IntervalInfo>,
-}
 
 /// How the developed window is cut.
 enum Cut {
@@ -344,19 +264,6 @@ fn lift_periods(samples: &[StepSample], w: TimeWindow) -> Vec<f64> {
     up.windows(2).map(|e| e[1] - e[0]).collect()
 }
 
-/// Sets `<key>_ci95` and the details of one key (None leaves both unset).
-fn put(
-    keys: &mut IntervalKeys,
-    name: &str,
-    slot: fn(&mut IntervalKeys) -> &mut Option<f64>,
-    i: Option<IntervalInfo>,
-) {
-    if let Some(i) = i {
-        *slot(keys) = i.half_width;
-        keys.intervals.insert(name.into(), i);
-    }
-}
-
 /// A linear conversion of another key's interval (physical units): the same observations, the
 /// half-width converted.
 fn converted(base: Option<&IntervalInfo>, value: Option<f64>, conv: f64) -> Option<IntervalInfo> {
@@ -370,6 +277,165 @@ fn converted(base: Option<&IntervalInfo>, value: Option<f64>, conv: f64) -> Opti
         }),
         ..b.clone()
     })
+}
+
+/// How the interval of a key is made.
+#[derive(Clone, Copy)]
+enum Rule {
+    /// The time mean of a quantity (times a sign) over the batches or bins.
+    TimeMean(Quantity, f64),
+    /// The descent angle, linearised about the mean descent and drift for each batch.
+    DescentAngle,
+    /// The lag of the drag peak: its value in each half-turn.
+    Lag,
+    /// The Strouhal number on the chord: the relative half-width of the mean lift period.
+    Strouhal,
+    /// The Strouhal number on the width: the chord's interval times the projected width.
+    StrouhalWidth,
+    /// The period of the motion: the durations of its cycles over the regime window.
+    Period,
+    /// The mean half range of θ per oscillation (no full turns); the key's value is computed
+    /// here, not read from the summary.
+    CycleAmplitude,
+    /// The named key's interval in physical units, with the factor of the run's units (none
+    /// when the plate has no physical scales).
+    Converted(&'static str, fn(&RunConfig) -> Option<f64>),
+    /// The frequency 1/P of the named period key: the half-width of P divided by P² (the delta
+    /// method).
+    Reciprocal(&'static str),
+}
+
+/// A key of the summary with an interval: its name, its `<key>_ci95` slot, its value in the
+/// summary and the rule of its interval.
+struct Key {
+    name: &'static str,
+    slot: fn(&mut IntervalKeys) -> &mut Option<f64>,
+    value: fn(&Summary) -> Option<f64>,
+    rule: Rule,
+}
+
+/// Every key with an interval, each after the keys its rule reads.
+#[rustfmt::skip]
+const KEYS: &[Key] = &[
+    Key { name: "mean_cl", slot: |k| &mut k.mean_cl_ci95, value: |s| s.mean_cl, rule: Rule::TimeMean(Quantity::Cl, 1.0) },
+    Key { name: "mean_cd", slot: |k| &mut k.mean_cd_ci95, value: |s| s.mean_cd, rule: Rule::TimeMean(Quantity::Cd, 1.0) },
+    Key { name: "mean_cm", slot: |k| &mut k.mean_cm_ci95, value: |s| s.mean_cm, rule: Rule::TimeMean(Quantity::Cm, 1.0) },
+    Key { name: "mean_speed", slot: |k| &mut k.mean_speed_ci95, value: |s| s.mean_speed, rule: Rule::TimeMean(Quantity::Speed, 1.0) },
+    Key { name: "mean_omega", slot: |k| &mut k.mean_omega_ci95, value: |s| s.mean_omega, rule: Rule::TimeMean(Quantity::Omega, 1.0) },
+    Key { name: "mean_gamma", slot: |k| &mut k.mean_gamma_ci95, value: |s| s.mean_gamma, rule: Rule::TimeMean(Quantity::Gamma, 1.0) },
+    Key { name: "mean_descent_speed", slot: |k| &mut k.mean_descent_speed_ci95, value: |s| s.fall.mean_descent_speed, rule: Rule::TimeMean(Quantity::Ydot, -1.0) },
+    Key { name: "mean_horizontal_speed", slot: |k| &mut k.mean_horizontal_speed_ci95, value: |s| s.fall.mean_horizontal_speed, rule: Rule::TimeMean(Quantity::Xdot, 1.0) },
+    Key { name: "descent_angle", slot: |k| &mut k.descent_angle_ci95, value: |s| s.fall.descent_angle, rule: Rule::DescentAngle },
+    Key { name: "lag_cd_behind_cl", slot: |k| &mut k.lag_cd_behind_cl_ci95, value: |s| s.lag_cd_behind_cl, rule: Rule::Lag },
+    Key { name: "strouhal_chord", slot: |k| &mut k.strouhal_chord_ci95, value: |s| s.strouhal_chord, rule: Rule::Strouhal },
+    Key { name: "strouhal_width", slot: |k| &mut k.strouhal_width_ci95, value: |s| s.strouhal_width, rule: Rule::StrouhalWidth },
+    Key { name: "period", slot: |k| &mut k.period_ci95, value: |s| s.fall.period, rule: Rule::Period },
+    Key { name: "mean_cycle_amplitude", slot: |k| &mut k.mean_cycle_amplitude_ci95, value: |_| None, rule: Rule::CycleAmplitude },
+    Key { name: "mean_speed_ft_s", slot: |k| &mut k.mean_speed_ft_s_ci95, value: |s| s.mean_speed_ft_s, rule: Rule::Converted("mean_speed", |c| physical(c).map(|p| p.speed_to_ft_s(1.0))) },
+    Key { name: "mean_omega_rad_s", slot: |k| &mut k.mean_omega_rad_s_ci95, value: |s| s.mean_omega_rad_s, rule: Rule::Converted("mean_omega", |c| Units::of(c).map(|u| u.rate_rad_s(1.0))) },
+    Key { name: "mean_speed_cm_s", slot: |k| &mut k.mean_speed_cm_s_ci95, value: |s| s.physical.mean_speed_cm_s, rule: Rule::Converted("mean_speed", |c| Units::of(c).map(|u| u.speed_cm_s(1.0))) },
+    Key { name: "mean_descent_speed_cm_s", slot: |k| &mut k.mean_descent_speed_cm_s_ci95, value: |s| s.physical.mean_descent_speed_cm_s, rule: Rule::Converted("mean_descent_speed", |c| Units::of(c).map(|u| u.speed_cm_s(1.0))) },
+    Key { name: "mean_horizontal_speed_cm_s", slot: |k| &mut k.mean_horizontal_speed_cm_s_ci95, value: |s| s.physical.mean_horizontal_speed_cm_s, rule: Rule::Converted("mean_horizontal_speed", |c| Units::of(c).map(|u| u.speed_cm_s(1.0))) },
+    Key { name: "period_s", slot: |k| &mut k.period_s_ci95, value: |s| s.physical.period_s, rule: Rule::Converted("period", |c| Units::of(c).map(|u| u.time_s(1.0))) },
+    Key { name: "frequency_hz", slot: |k| &mut k.frequency_hz_ci95, value: |s| s.physical.frequency_hz, rule: Rule::Reciprocal("period_s") },
+];
+
+/// What the rules read besides the summary: the run, its developed window cut into batches, its
+/// motion class.
+struct Context<'a> {
+    config: &'a RunConfig,
+    rec: &'a RunRecord,
+    w: TimeWindow,
+    means: TimeMeans<'a>,
+    motion: Option<&'a (TimeWindow, MotionClass)>,
+}
+
+impl Context<'_> {
+    /// The interval of a key by `rule` about its summary `value`, given the intervals of the keys
+    /// before it (`done`); None when the run has none for it.
+    fn interval(
+        &self,
+        rule: Rule,
+        value: Option<f64>,
+        sum: &Summary,
+        done: &BTreeMap<String, IntervalInfo>,
+    ) -> Option<IntervalInfo> {
+        let samples = &self.rec.samples[..];
+        match rule {
+            Rule::TimeMean(q, sign) => value.map(|v| self.means.interval(q, sign, v)),
+            Rule::DescentAngle => {
+                let (d, x) = (
+                    sum.fall.mean_descent_speed?,
+                    sum.fall.mean_horizontal_speed?,
+                );
+                Some(self.means.descent_angle(value?, d, x))
+            }
+            Rule::Lag => {
+                let lags = lags_cd_behind_cl(samples, self.w);
+                let b: Vec<(f64, f64)> = lags.iter().map(|x| (1.0, *x)).collect();
+                Some(with_drift(
+                    list_interval(value?, &lags, "half-turns", 1.0),
+                    &b,
+                ))
+            }
+            Rule::Strouhal => {
+                let (st, Case::Static { .. }) = (value?, &self.config.case) else {
+                    return None;
+                };
+                let periods = lift_periods(samples, self.w);
+                let mean_p = periods.iter().sum::<f64>() / periods.len().max(1) as f64;
+                let mut i = list_interval(st, &periods, "lift cycles", 1.0);
+                i.half_width = i.half_width.map(|hw| st * hw / mean_p);
+                i.note = i.note.or(Some(
+                    "relative half-width of the mean duration of the lift cycles".into(),
+                ));
+                Some(i)
+            }
+            Rule::StrouhalWidth => {
+                let (chord, Case::Static { alpha, .. }) =
+                    (done.get("strouhal_chord")?, &self.config.case)
+                else {
+                    return None;
+                };
+                let width = projected_width(self.config, *alpha);
+                Some(IntervalInfo {
+                    value: value?,
+                    half_width: chord.half_width.map(|hw| hw * width),
+                    ..chord.clone()
+                })
+            }
+            Rule::Period => {
+                let (rw, class) = self.motion?;
+                let events = cycle_events(samples, *rw, class);
+                let durations: Vec<f64> = events.windows(2).map(|e| e[1] - e[0]).collect();
+                let (what, per) = if class.turns == (0, 0) {
+                    ("oscillation durations", 1.0)
+                } else {
+                    ("half-turn durations", 2.0)
+                };
+                let b: Vec<(f64, f64)> = durations.iter().map(|x| (1.0, per * x)).collect();
+                Some(with_drift(list_interval(value?, &durations, what, per), &b))
+            }
+            Rule::CycleAmplitude => {
+                let (rw, class) = self.motion?;
+                if sum.fall.period.is_none() || class.turns != (0, 0) {
+                    return None;
+                }
+                let amps = cycle_amplitudes(samples, &cycle_events(samples, *rw, class));
+                let mean = amps.iter().sum::<f64>() / amps.len() as f64;
+                (!amps.is_empty()).then(|| list_interval(mean, &amps, "oscillations", 1.0))
+            }
+            Rule::Converted(base, factor) => converted(done.get(base), value, factor(self.config)?),
+            Rule::Reciprocal(base) => {
+                let (p, f) = (done.get(base)?, value?);
+                Some(IntervalInfo {
+                    value: f,
+                    half_width: p.half_width.map(|hw| hw * f * f),
+                    ..p.clone()
+                })
+            }
+        }
+    }
 }
 
 /// The intervals of every mean in `sum` (computed by `summarize` from the same window, lift
@@ -390,9 +456,8 @@ pub fn intervals_of(
         return keys;
     };
     let w = TimeWindow { t0, t1 };
-    let h = &rec.samples;
     let means = TimeMeans {
-        h,
+        h: &rec.samples,
         cut: cut(config, rec, w, freq, motion),
     };
     keys.ci_method = Some(match &means.cut {
@@ -416,194 +481,22 @@ pub fn intervals_of(
                 .to_string()
         }
     });
-    let time_mean = |q: Quantity, sign: f64, v: Option<f64>| v.map(|v| means.interval(q, sign, v));
-    put(
-        &mut keys,
-        "mean_cl",
-        |k| &mut k.mean_cl_ci95,
-        time_mean(Quantity::Cl, 1.0, sum.mean_cl),
-    );
-    put(
-        &mut keys,
-        "mean_cd",
-        |k| &mut k.mean_cd_ci95,
-        time_mean(Quantity::Cd, 1.0, sum.mean_cd),
-    );
-    put(
-        &mut keys,
-        "mean_cm",
-        |k| &mut k.mean_cm_ci95,
-        time_mean(Quantity::Cm, 1.0, sum.mean_cm),
-    );
-    let speed = time_mean(Quantity::Speed, 1.0, sum.mean_speed);
-    let omega = time_mean(Quantity::Omega, 1.0, sum.mean_omega);
-    put(
-        &mut keys,
-        "mean_speed",
-        |k| &mut k.mean_speed_ci95,
-        speed.clone(),
-    );
-    put(
-        &mut keys,
-        "mean_omega",
-        |k| &mut k.mean_omega_ci95,
-        omega.clone(),
-    );
-    put(
-        &mut keys,
-        "mean_gamma",
-        |k| &mut k.mean_gamma_ci95,
-        time_mean(Quantity::Gamma, 1.0, sum.mean_gamma),
-    );
-    let descent = time_mean(Quantity::Ydot, -1.0, sum.fall.mean_descent_speed);
-    let drift = time_mean(Quantity::Xdot, 1.0, sum.fall.mean_horizontal_speed);
-    put(
-        &mut keys,
-        "mean_descent_speed",
-        |k| &mut k.mean_descent_speed_ci95,
-        descent.clone(),
-    );
-    put(
-        &mut keys,
-        "mean_horizontal_speed",
-        |k| &mut k.mean_horizontal_speed_ci95,
-        drift.clone(),
-    );
-    if let (Some(a), Some(d), Some(x)) = (
-        sum.fall.descent_angle,
-        sum.fall.mean_descent_speed,
-        sum.fall.mean_horizontal_speed,
-    ) {
-        let i = means.descent_angle(a, d, x);
-        put(
-            &mut keys,
-            "descent_angle",
-            |k| &mut k.descent_angle_ci95,
-            Some(i),
-        );
-    }
-    // The lag of the drag peak: one value per half-turn.
-    if let Some(lag) = sum.lag_cd_behind_cl {
-        let lags = super::summary::lags_cd_behind_cl(&rec.samples, w);
-        let b: Vec<(f64, f64)> = lags.iter().map(|x| (1.0, *x)).collect();
-        let i = with_drift(list_interval(lag, &lags, "half-turns", 1.0), &b);
-        put(
-            &mut keys,
-            "lag_cd_behind_cl",
-            |k| &mut k.lag_cd_behind_cl_ci95,
-            Some(i),
-        );
-    }
-    // The Strouhal numbers: the relative half-width of the mean lift period.
-    if let (Some(st), Case::Static { alpha, .. }) = (sum.strouhal_chord, &config.case) {
-        let periods = lift_periods(&rec.samples, w);
-        let mean_p = periods.iter().sum::<f64>() / periods.len().max(1) as f64;
-        let mut i = list_interval(st, &periods, "lift cycles", 1.0);
-        i.half_width = i.half_width.map(|hw| st * hw / mean_p);
-        i.note = i.note.or(Some(
-            "relative half-width of the mean duration of the lift cycles".into(),
-        ));
-        let mut iw = i.clone();
-        let width = crate::summary::projected_width(config, *alpha);
-        iw.value = st * width;
-        iw.half_width = i.half_width.map(|hw| hw * width);
-        put(
-            &mut keys,
-            "strouhal_chord",
-            |k| &mut k.strouhal_chord_ci95,
-            Some(i),
-        );
-        put(
-            &mut keys,
-            "strouhal_width",
-            |k| &mut k.strouhal_width_ci95,
-            Some(iw),
-        );
-    }
-    // The period and amplitude of the motion: its cycles over the regime window.
-    let mut period = None;
-    if let (Some(p), Some((rw, class))) = (sum.fall.period, motion) {
-        let events = cycle_events(&rec.samples, *rw, class);
-        let durations: Vec<f64> = events.windows(2).map(|e| e[1] - e[0]).collect();
-        let (what, per) = if class.turns == (0, 0) {
-            ("oscillation durations", 1.0)
-        } else {
-            ("half-turn durations", 2.0)
+    let ctx = Context {
+        config,
+        rec,
+        w,
+        means,
+        motion,
+    };
+    for key in KEYS {
+        let Some(i) = ctx.interval(key.rule, (key.value)(sum), sum, &keys.intervals) else {
+            continue;
         };
-        let b: Vec<(f64, f64)> = durations.iter().map(|x| (1.0, per * x)).collect();
-        let i = with_drift(list_interval(p, &durations, what, per), &b);
-        period = Some(i.clone());
-        put(&mut keys, "period", |k| &mut k.period_ci95, Some(i));
-        if class.turns == (0, 0) {
-            let amps = cycle_amplitudes(&rec.samples, &events);
-            if !amps.is_empty() {
-                let mean = amps.iter().sum::<f64>() / amps.len() as f64;
-                keys.mean_cycle_amplitude = Some(mean);
-                let i = list_interval(mean, &amps, "oscillations", 1.0);
-                put(
-                    &mut keys,
-                    "mean_cycle_amplitude",
-                    |k| &mut k.mean_cycle_amplitude_ci95,
-                    Some(i),
-                );
-            }
+        if matches!(key.rule, Rule::CycleAmplitude) {
+            keys.mean_cycle_amplitude = Some(i.value);
         }
-    }
-    // Physical units: the same intervals, converted.
-    if let Some(card) = physical(config) {
-        let i = converted(speed.as_ref(), sum.mean_speed_ft_s, card.speed_to_ft_s(1.0));
-        put(
-            &mut keys,
-            "mean_speed_ft_s",
-            |k| &mut k.mean_speed_ft_s_ci95,
-            i,
-        );
-    }
-    if let Some(u) = Units::of(config) {
-        let i = converted(omega.as_ref(), sum.mean_omega_rad_s, u.rate_rad_s(1.0));
-        put(
-            &mut keys,
-            "mean_omega_rad_s",
-            |k| &mut k.mean_omega_rad_s_ci95,
-            i,
-        );
-        let p = &sum.physical;
-        let cm = u.speed_cm_s(1.0);
-        let i = converted(speed.as_ref(), p.mean_speed_cm_s, cm);
-        put(
-            &mut keys,
-            "mean_speed_cm_s",
-            |k| &mut k.mean_speed_cm_s_ci95,
-            i,
-        );
-        let i = converted(descent.as_ref(), p.mean_descent_speed_cm_s, cm);
-        put(
-            &mut keys,
-            "mean_descent_speed_cm_s",
-            |k| &mut k.mean_descent_speed_cm_s_ci95,
-            i,
-        );
-        let i = converted(drift.as_ref(), p.mean_horizontal_speed_cm_s, cm);
-        put(
-            &mut keys,
-            "mean_horizontal_speed_cm_s",
-            |k| &mut k.mean_horizontal_speed_cm_s_ci95,
-            i,
-        );
-        let ps = converted(period.as_ref(), p.period_s, u.time_s(1.0));
-        if let (Some(ps), Some(f)) = (&ps, p.frequency_hz) {
-            // f = 1/P: the half-width of P divided by P² (the delta method).
-            let mut i = ps.clone();
-            i.value = f;
-            i.half_width = ps.half_width.map(|hw| hw * f * f);
-            put(
-                &mut keys,
-                "frequency_hz",
-                |k| &mut k.frequency_hz_ci95,
-                Some(i),
-            );
-        }
-        put(&mut keys, "period_s", |k| &mut k.period_s_ci95, ps);
+        *(key.slot)(&mut keys) = i.half_width;
+        keys.intervals.insert(key.name.into(), i);
     }
     keys.ci_drift = drift_line(&keys.intervals);
     keys.ci_alternating = alternation_line(&keys.intervals);
@@ -649,253 +542,7 @@ fn drift_line(intervals: &BTreeMap<String, IntervalInfo>) -> Option<String> {
     (!parts.is_empty()).then(|| parts.join(", "))
 }
 
+// The tests build summaries, which sit above this module: they live in their own file.
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::summary::summarize;
-    use platefall_core::grid::GridSpec;
-    use platefall_core::sim::RunStatus;
-
-    fn free() -> RunConfig {
-        let case = Case::Free {
-            v0: 1.0,
-            gamma0: -0.5,
-            alpha0: 0.1,
-            develop: 0.0,
-        };
-        RunConfig::new(case, GridSpec::seed())
-    }
-
-    fn record(samples: Vec<StepSample>) -> RunRecord {
-        RunRecord {
-            status: RunStatus::Completed,
-            samples: samples.into_iter().collect(),
-            t_release: 0.0,
-            cells: 1,
-            recirculation_length: None,
-        }
-    }
-
-    /// A plate turning at θ̇ = rate(θ), stepped with an uneven time step; C_L follows the angle.
-    fn tumbling(rate: impl Fn(f64, usize) -> f64, turns: f64) -> Vec<StepSample> {
-        let (mut t, mut th) = (0.0, 0.0);
-        let mut out = Vec::new();
-        let mut k = 0;
-        while th < turns * 2.0 * PI {
-            let turn = (th / (2.0 * PI)) as usize;
-            let om = rate(th, turn);
-            out.push(StepSample {
-                step: k,
-                t,
-                theta: th,
-                omega: om,
-                cl: (2.0 * th).sin(),
-                speed: 1.0 + 0.1 * (2.0 * th).cos(),
-                ydot: -0.5,
-                xdot: 0.8,
-                ..Default::default()
-            });
-            let dt = 2e-3 * (1.0 + 0.3 * ((k as f64) * 0.7).sin());
-            t += dt;
-            th += om * dt;
-            k += 1;
-        }
-        out
-    }
-
-    #[test]
-    fn a_periodic_tumble_has_a_near_zero_interval_over_its_whole_turns() {
-        // θ̇ = 2.5 + 0.4 sin 2θ: every turn is the same, so every whole-turn batch has the same
-        // mean; only the step's discreteness is left.
-        let cfg = free();
-        let rec = record(tumbling(|th, _| 2.5 + 0.4 * (2.0 * th).sin(), 12.0));
-        let s = summarize(&cfg, &rec, 0.0);
-        assert_eq!(s.ci.ci_batches, Some(10), "{:?}", s.ci.ci_method);
-        let hw = s.ci.mean_omega_ci95.unwrap();
-        assert!(hw < 2e-3, "half-width {hw}");
-        assert!(s.ci.mean_cl_ci95.unwrap() < 2e-3);
-        let i = &s.ci.intervals["mean_omega"];
-        assert_eq!(i.observations, "whole turns");
-        assert_eq!(i.count, 10);
-    }
-
-    #[test]
-    fn a_plate_turning_both_ways_is_averaged_over_time_in_the_regime_window() {
-        // θ swings 1.5 turns each way (period 10) while drifting forward, so it completes net
-        // turns, but the turns of either sense are not cycles of the motion; the descent slows from 1 to 0.5 ± 0.1 (period 0.5) half-way through.
-        let (dt, t_end) = (1e-2, 200.0);
-        let samples = (0..=(t_end / dt) as usize)
-            .map(|k| {
-                let t = k as f64 * dt;
-                let descent = if t < 100.0 {
-                    1.0
-                } else {
-                    0.5 + 0.1 * (4.0 * PI * t).sin()
-                };
-                StepSample {
-                    step: k as u64,
-                    t,
-                    dt,
-                    theta: 3.0 * PI * (0.2 * PI * t).sin() + 0.3 * t,
-                    ydot: -descent,
-                    speed: descent,
-                    ..Default::default()
-                }
-            })
-            .collect();
-        let s = summarize(&free(), &record(samples), 0.0);
-        assert!(
-            s.developed_rule.contains("not whole turns"),
-            "{}",
-            s.developed_rule
-        );
-        assert_eq!((s.autorotation_time, s.lag_cd_behind_cl), (None, None));
-        assert_eq!(
-            (s.developed_from, s.developed_to),
-            (Some(100.0), Some(t_end))
-        );
-        let descent = s.fall.mean_descent_speed.unwrap();
-        assert!((descent - 0.5).abs() < 1e-3, "mean descent {descent}");
-        assert_eq!(s.ci.ci_batches, None, "{:?}", s.ci.ci_method);
-        let i = &s.ci.intervals["mean_descent_speed"];
-        assert_eq!(i.observations, "time bins", "{i:?}");
-        let hw = i.half_width.unwrap();
-        assert!(hw < 0.02 && (descent - 0.5).abs() <= hw, "{descent} ± {hw}");
-    }
-
-    #[test]
-    fn turns_of_random_rates_give_the_t_interval_of_the_turn_means() {
-        // Each turn at its own constant rate, drawn from a fixed list: the batch means are the
-        // turn means, so the interval is the Student t interval of the per-turn time means.
-        let rates = [
-            2.4, 2.7, 2.5, 2.9, 2.3, 2.6, 2.8, 2.45, 2.65, 2.55, 2.75, 2.35, 2.6,
-        ];
-        let cfg = free();
-        let rec = record(tumbling(|_, turn| rates[turn.min(rates.len() - 1)], 13.0));
-        let s = summarize(&cfg, &rec, 0.0);
-        let i = &s.ci.intervals["mean_omega"];
-        assert_eq!(i.count, 11, "{i:?}");
-        // Turns 2..=12 completed after the first: the batch rates are rates[1..12] (the step
-        // that crosses a turn boundary blurs each batch by one step: < 1e-3).
-        let b = &rates[1..12];
-        let dur: Vec<f64> = b.iter().map(|r| 2.0 * PI / r).collect();
-        let total: f64 = dur.iter().sum();
-        let mean = 2.0 * PI * b.len() as f64 / total;
-        let n = b.len() as f64;
-        let var = n / (n - 1.0)
-            * b.iter()
-                .zip(&dur)
-                .map(|(r, d)| (d / total).powi(2) * (r - mean).powi(2))
-                .sum::<f64>();
-        let tau = i.tau.unwrap();
-        assert!(tau >= 1.0);
-        let expect = crate::stats::t95(n / tau - 1.0) * (tau * var).sqrt();
-        assert!(
-            (i.half_width.unwrap() - expect).abs() < 0.05 * expect,
-            "{i:?} vs {expect}"
-        );
-        assert!((s.mean_omega.unwrap() - mean).abs() < 2e-3);
-    }
-
-    #[test]
-    fn a_rate_that_still_settles_is_flagged_as_drifting() {
-        // θ̇ rising from 2.7 towards 3.5 over the turns, like a coarse card's first 20 turns.
-        let cfg = free();
-        let rec = record(tumbling(
-            |_, turn| 3.5 - 0.8 * (-(turn as f64) / 5.0).exp(),
-            20.0,
-        ));
-        let s = summarize(&cfg, &rec, 0.0);
-        let i = &s.ci.intervals["mean_omega"];
-        assert_eq!(i.drift_significant, Some(true), "{i:?}");
-        assert!(i.drift.unwrap() > 0.3, "{i:?}");
-        assert!(s.ci.ci_drift.as_deref().unwrap().contains("mean_omega"));
-        assert!(crate::report::report(&cfg, &s).contains("drift"));
-        // A periodic tumble does not drift.
-        let rec = record(tumbling(|th, _| 2.5 + 0.4 * (2.0 * th).sin(), 12.0));
-        let s = summarize(&cfg, &rec, 0.0);
-        assert_eq!(s.ci.intervals["mean_omega"].drift_significant, Some(false));
-    }
-
-    #[test]
-    fn averaging_from_a_later_turn_leaves_the_transient_out() {
-        // Turns 0..10 at 2.0, then 3.0 for 20 turns: from the first turn the mean mixes both and
-        // drifts; from turn 10 on it is the settled 3.0 alone, over the 19 whole turns after it.
-        let mut cfg = free();
-        let rate = |_: f64, turn: usize| if turn < 10 { 2.0 } else { 3.0 };
-        let rec = record(tumbling(rate, 30.0));
-        let all = summarize(&cfg, &rec, 0.0);
-        assert!(all.mean_omega.unwrap() < 2.8, "{:?}", all.mean_omega);
-        cfg.time.average_from_turn = 10;
-        let s = summarize(&cfg, &rec, 0.0);
-        assert!(
-            (s.mean_omega.unwrap() - 3.0).abs() < 1e-3,
-            "{:?}",
-            s.mean_omega
-        );
-        assert!(
-            (s.developed_from.unwrap() - 10.0 * PI).abs() < 0.01,
-            "{s:?}"
-        );
-        assert_eq!(s.ci.intervals["mean_omega"].count, 19);
-        assert_eq!(s.ci.intervals["mean_omega"].drift_significant, Some(false));
-        assert!(s.developed_rule.contains("turn 10"), "{}", s.developed_rule);
-    }
-
-    #[test]
-    fn turns_that_alternate_are_flagged() {
-        // Odd and even turns at two rates (a period-two tumble).
-        let cfg = free();
-        let rec = record(tumbling(
-            |_, turn| if turn % 2 == 0 { 2.4 } else { 2.8 },
-            16.0,
-        ));
-        let s = summarize(&cfg, &rec, 0.0);
-        let i = &s.ci.intervals["mean_omega"];
-        assert!(i.lag1.unwrap() < -0.8, "{i:?}");
-        assert!(s
-            .ci
-            .ci_alternating
-            .as_deref()
-            .unwrap()
-            .contains("mean_omega"));
-        assert!(crate::report::report(&cfg, &s).contains("alternate"));
-    }
-
-    #[test]
-    fn a_run_of_three_turns_says_it_is_too_short() {
-        let cfg = free();
-        let rec = record(tumbling(|_, _| 2.5, 3.5));
-        let s = summarize(&cfg, &rec, 0.0);
-        assert_eq!(s.ci.ci_batches, Some(2));
-        assert!(s.ci.mean_omega_ci95.is_none());
-        let note = s.ci.ci_note.as_deref().unwrap();
-        assert!(
-            note.contains("too short") && note.contains("2 whole turns"),
-            "{note}"
-        );
-        assert!(s.ci.intervals["mean_omega"].note.is_some());
-        // The report says so too, and the JSON keeps the key with a null.
-        let json = serde_json::to_value(&s).unwrap();
-        assert!(json["mean_omega_ci95"].is_null() && json["ci_level"] == 0.95);
-        assert!(crate::report::report(&cfg, &s).contains("too short"));
-    }
-
-    #[test]
-    fn the_report_shows_value_plus_minus_half_width() {
-        let rates = [
-            2.4, 2.7, 2.5, 2.9, 2.3, 2.6, 2.8, 2.45, 2.65, 2.55, 2.75, 2.35, 2.6,
-        ];
-        let cfg = free();
-        let rec = record(tumbling(|_, turn| rates[turn.min(rates.len() - 1)], 13.0));
-        let s = summarize(&cfg, &rec, 0.0);
-        let text = crate::report::report(&cfg, &s);
-        let hw = s.ci.mean_omega_ci95.unwrap();
-        let shown = crate::report::pm(s.mean_omega, Some(hw), 3);
-        assert!(
-            shown.contains(" ± ") && text.contains(&shown),
-            "{shown} in {text}"
-        );
-        assert!(text.contains("95 % confidence half-width"), "{text}");
-    }
-}
+#[path = "intervals_tests.rs"]
+mod tests;

@@ -6,13 +6,15 @@
 //! [`platefall_core::sim::FieldSnapshot`], [`platefall_core::grid::GridGeometry`]): no I/O, no Rerun types. The
 //! logger thread (`record`) calls the painting, so that work runs beside the solver, not in it.
 //!
-//! - [`analysis`]: developed windows, means, the dominant lift frequency, turn counting.
-//! - [`summary`]: the run summary with its stable JSON keys; [`report`]: the end-of-run text;
-//!   [`regime`]: what a falling plate is doing (steady, fluttering, tumbling, chaotic).
+//! - [`analysis`]: developed windows, means, the dominant lift frequency, turn counting, the lag
+//!   of the drag peak, the projected width.
 //! - [`stats`]: confidence intervals of time means of autocorrelated series (batch means,
-//!   integrated autocorrelation times, Student's t); [`intervals`]: the batches of a run and the
-//!   interval of every mean in its summary; [`convergence`]: observed order, Richardson
+//!   integrated autocorrelation times, Student's t); [`convergence`]: observed order, Richardson
 //!   extrapolation and the grid-convergence index of a refinement study.
+//! - [`keys`]: the run summary's data with its stable JSON keys; [`intervals`]: the batches of a
+//!   run and the interval of every mean in its summary; [`summary`]: the summary of a run, its
+//!   means and then their intervals; [`report`]: the end-of-run text; [`regime`]: what a falling
+//!   plate is doing (steady, fluttering, tumbling, chaotic).
 //! - [`fields`]: the staggered-grid quantities. [`vorticity_at_nodes`] (ω = ∂v/∂x − ∂u/∂y at cell
 //!   corners), [`stream_function_at_nodes`] (ψ with u = ψ_y, v = −ψ_x, integrated from the MAC face
 //!   fluxes: exact for a discretely divergence-free field), and [`StreamFrame`], the observer frames
@@ -30,11 +32,14 @@
 //! - [`plot_range`]: the value ranges the viewer's plots open on ([`PlotRanges`]), chosen from
 //!   the case so that the developed motion fills them and the start-up spike lies outside;
 //!   [`view`]: those and the wake window, the viewer's defaults of a run ([`ViewDefaults`]).
+#![warn(missing_docs)]
+
 pub mod analysis;
 pub mod contour;
 pub mod convergence;
 pub mod fields;
 pub mod intervals;
+pub mod keys;
 pub mod painter;
 pub mod phase;
 pub mod plot_range;

@@ -4,108 +4,17 @@
 //! Everything is computed from `&[StepSample]` windows.
 use std::f64::consts::PI;
 
-use serde::Serialize;
-
-use super::analysis::{count_turns, dominant_frequency, whole_periods, TimeWindow};
-use super::intervals::{intervals_of, IntervalKeys};
-use super::regime::{classify, regime_window, MotionClass, Regime};
-use platefall_core::config::{physical, Units};
-use platefall_core::sim::{
-    Case, CaseKind, History, Quantity, RunConfig, RunRecord, StatusKind, StepSample,
+use super::analysis::{
+    count_turns, dominant_frequency, lag_cd_behind_cl, projected_width, whole_periods, TimeWindow,
 };
+use super::intervals::intervals_of;
+pub use super::keys::{FallKeys, IntervalKeys, PhysicalKeys, Summary};
+use super::regime::{classify, regime_window, MotionClass};
+use platefall_core::config::{physical, Units};
+use platefall_core::sim::{Case, History, Quantity, RunConfig, RunRecord, StepSample};
 
 /// Peak-to-peak C_L below which the flow counts as steady (no Strouhal number).
 pub const STEADY_BAND: f64 = 0.02;
-
-#[derive(Clone, Debug, Serialize)]
-pub struct Summary {
-    pub case: CaseKind,
-    pub status: StatusKind,
-    pub re: f64,
-    pub resolution: usize,
-    pub cells: usize,
-    pub steps: u64,
-    /// The convective time the run reached (its end time when it completed by reaching it; the
-    /// JSON key is `t_end`).
-    #[serde(rename = "t_end")]
-    pub t_reached: f64,
-    pub wall_seconds: f64,
-    /// The developed part the means are taken over, and how it was chosen.
-    pub developed_from: Option<f64>,
-    pub developed_to: Option<f64>,
-    pub developed_rule: String,
-    pub mean_cl: Option<f64>,
-    pub mean_cd: Option<f64>,
-    pub mean_cm: Option<f64>,
-    pub max_cl: Option<f64>,
-    pub min_cl: Option<f64>,
-    pub max_cd: Option<f64>,
-    /// Dominant lift frequency × c/U, and × the section's width across the stream / U (static
-    /// case; c|sin α| + t|cos α| for a rectangle, see [`projected_width`]); null when steady.
-    pub strouhal_chord: Option<f64>,
-    pub strouhal_width: Option<f64>,
-    /// Static case: the reversed-flow length behind the plate at the end of the run, from its rear
-    /// boundary along the relative free stream (chords; the cylinder's L/D).
-    pub recirculation_length: Option<f64>,
-    // Coupled and forced cases.
-    pub mean_speed: Option<f64>,
-    pub mean_omega: Option<f64>,
-    pub mean_gamma: Option<f64>,
-    pub revolutions: Option<f64>,
-    pub autorotation_time: Option<f64>,
-    pub autorotation_rule: Option<String>,
-    /// Lag of max C_D behind max C_L in α (rad), averaged over the developed half-turns.
-    pub lag_cd_behind_cl: Option<f64>,
-    /// Peak lift coefficient in the sense of the rotation (max C_L turning counter-clockwise,
-    /// −min C_L turning clockwise), over the developed part; the dissertation's "max C_L in autorotation".
-    pub peak_cl_rotation: Option<f64>,
-    /// Card preset: the mean speed in the card's feet.
-    pub mean_speed_ft_s: Option<f64>,
-    /// The mean rotation rate |θ̇| in rad/s (plates with physical units).
-    pub mean_omega_rad_s: Option<f64>,
-    #[serde(flatten)]
-    pub fall: FallKeys,
-    #[serde(flatten)]
-    pub physical: PhysicalKeys,
-    /// The 95 % confidence intervals of the means (`<key>_ci95`, `intervals`; see `post::intervals`).
-    #[serde(flatten)]
-    pub ci: IntervalKeys,
-}
-
-/// What a falling (or pinned) plate is doing, over the developed part; null for static and forced
-/// runs. Descent is positive downwards; the regime rule is in `post::regime`.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct FallKeys {
-    /// steady, fluttering, tumbling, chaotic or undetermined.
-    pub regime: Option<Regime>,
-    pub regime_rule: Option<String>,
-    /// Start of the window the regime is judged on (it ends with the run).
-    pub regime_from: Option<f64>,
-    /// −mean Ẏ (positive when sinking).
-    pub mean_descent_speed: Option<f64>,
-    /// mean Ẋ: the mean horizontal drift (signed; ≈ 0 for a plate that flutters in place).
-    pub mean_horizontal_speed: Option<f64>,
-    /// Angle of the mean path below the horizontal, atan2(descent, |drift|) (rad; π/2 straight
-    /// down, negative when rising).
-    pub descent_angle: Option<f64>,
-    /// One full oscillation of θ (fluttering) or one full turn (tumbling), in c/U.
-    pub period: Option<f64>,
-    /// Half the peak-to-peak range of θ when the plate makes no full turn (rad).
-    pub angle_amplitude: Option<f64>,
-}
-
-/// The results in physical units (plates with physical scales: described physically, or the card).
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct PhysicalKeys {
-    /// U (m/s) and c (m) behind the conversions.
-    pub velocity_scale_m_s: Option<f64>,
-    pub chord_m: Option<f64>,
-    pub mean_speed_cm_s: Option<f64>,
-    pub mean_descent_speed_cm_s: Option<f64>,
-    pub mean_horizontal_speed_cm_s: Option<f64>,
-    pub period_s: Option<f64>,
-    pub frequency_hz: Option<f64>,
-}
 
 /// The developed window: for coupled cases the whole turns after autorotation is established (the
 /// first complete turn after release, or the turn `--average-from-turn` names), or, for a plate
@@ -199,50 +108,6 @@ fn coupled_window(
     }
 }
 
-/// Mean lag (in α) of the maximum of C_D behind the maximum of C_L, per half-turn (period π in θ).
-/// For clockwise rotation the lift is taken in the rotation's own sense (−C_L): the mirror image
-/// y → −y of a counter-clockwise run turns clockwise with C_L negated and C_D unchanged.
-fn lag_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Option<f64> {
-    let lags = lags_cd_behind_cl(samples, w);
-    (!lags.is_empty()).then(|| lags.iter().sum::<f64>() / lags.len() as f64)
-}
-
-/// The lag of `lag_cd_behind_cl` in each half-turn of the window.
-pub fn lags_cd_behind_cl(samples: &[StepSample], w: TimeWindow) -> Vec<f64> {
-    lag_list(samples, w).unwrap_or_default()
-}
-
-fn lag_list(samples: &[StepSample], w: TimeWindow) -> Option<Vec<f64>> {
-    let inside: Vec<&StepSample> = samples
-        .iter()
-        .filter(|s| s.t >= w.t0 && s.t <= w.t1)
-        .collect();
-    let first = inside.first()?;
-    let dir = if inside.last()?.theta >= first.theta {
-        1.0
-    } else {
-        -1.0
-    };
-    let mut lags = Vec::new();
-    let mut k0 = 0;
-    for k in 1..=inside.len() {
-        let end = k == inside.len() || dir * (inside[k].theta - inside[k0].theta) >= PI;
-        if end {
-            let seg = &inside[k0..k];
-            if k < inside.len() || dir * (seg.last()?.theta - seg[0].theta) >= PI * 0.999 {
-                let a_cl = seg
-                    .iter()
-                    .max_by(|a, b| (dir * a.cl).total_cmp(&(dir * b.cl)))?
-                    .theta;
-                let a_cd = seg.iter().max_by(|a, b| a.cd.total_cmp(&b.cd))?.theta;
-                lags.push((dir * (a_cd - a_cl)).rem_euclid(PI));
-            }
-            k0 = k;
-        }
-    }
-    Some(lags)
-}
-
 /// The coefficient keys over the developed window `w` (Strouhal numbers for the static case).
 fn set_coefficients(
     sum: &mut Summary,
@@ -263,13 +128,6 @@ fn set_coefficients(
         (sum.strouhal_chord, sum.strouhal_width) =
             (Some(f), Some(f * projected_width(config, *alpha)));
     }
-}
-
-/// The width of a static section at angle of attack α across the stream (chords): the length
-/// the Strouhal number on the width is based on (c|sin α| + t|cos α| for a rectangle).
-pub fn projected_width(config: &RunConfig, alpha: f64) -> f64 {
-    let (s, c) = alpha.sin_cos();
-    config.grid.shape.outline().width_across([c, -s])
 }
 
 /// The keys measured on the final flow field.
@@ -431,44 +289,4 @@ pub fn summarize(config: &RunConfig, rec: &RunRecord, wall_seconds: f64) -> Summ
     sum.physical = physical_keys(units.as_ref(), sum.mean_speed, &sum.fall);
     sum.ci = intervals_of(config, rec, &sum, freq, motion.as_ref());
     sum
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A plate turning at rate `om` with C_L peaking at θ = 1.0 and C_D at θ = 1.5 (mod π) for
-    /// counter-clockwise rotation, and the mirror image (C_L negated) for clockwise rotation.
-    fn turning(om: f64) -> Vec<StepSample> {
-        let dir = om.signum();
-        (0..20000)
-            .map(|k| {
-                let t = k as f64 * 0.001;
-                let th = om * t;
-                let phase = dir * th;
-                let bump =
-                    |c: f64| (-(((phase - c).rem_euclid(PI) - PI / 2.0).powi(2)) * 8.0).exp();
-                StepSample {
-                    t,
-                    theta: th,
-                    omega: om,
-                    cl: dir * bump(1.0 - PI / 2.0 + PI),
-                    cd: bump(1.5 - PI / 2.0 + PI),
-                    ..Default::default()
-                }
-            })
-            .collect()
-    }
-
-    #[test]
-    fn lag_of_drag_behind_lift_is_the_same_for_mirror_image_rotations() {
-        let w = TimeWindow { t0: 1.0, t1: 19.0 };
-        let ccw = lag_cd_behind_cl(&turning(2.0), w).unwrap();
-        let cw = lag_cd_behind_cl(&turning(-2.0), w).unwrap();
-        assert!((ccw - 0.5).abs() < 0.01, "counter-clockwise lag {ccw}");
-        assert!(
-            (cw - ccw).abs() < 0.01,
-            "clockwise lag {cw} differs from {ccw}"
-        );
-    }
 }

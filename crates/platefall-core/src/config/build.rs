@@ -119,6 +119,8 @@ struct Options {
     near_x: f64,
     near_y: f64,
     t_end: Option<f64>,
+    /// The first grid option given after `seed_grid()`, refused by `build`.
+    after_seed: Option<&'static str>,
 }
 
 impl Default for Options {
@@ -138,6 +140,7 @@ impl Default for Options {
             near_x: defaults::NEAR,
             near_y: defaults::NEAR,
             t_end: None,
+            after_seed: None,
         }
     }
 }
@@ -255,6 +258,7 @@ impl RunBuilder<StaticPlate> {
         let case = Case::Static { alpha, kick };
         let t_end = defaults::T_END_STATIC;
         self.options
+            .checked()?
             .config(case, defaults::REYNOLDS, t_end, None, None, None)
             .validate()
     }
@@ -286,6 +290,7 @@ impl RunBuilder<ForcedRotation> {
             spinup,
         };
         self.options
+            .checked()?
             .config(case, defaults::REYNOLDS, t_end, None, None, None)
             .validate()
     }
@@ -458,15 +463,9 @@ impl<C> RunBuilder<C> {
 
     /// Cells per chord N (h = c/N) [default: 64].
     pub fn resolution(mut self, resolution: usize) -> Self {
-        if let GridChoice::Modern { resolution: n, .. } = &mut self.options.grid {
-            *n = resolution;
-        } else {
-            self.options.grid = GridChoice::Modern {
-                resolution,
-                section: None,
-                extent: defaults::EXTENT,
-                growth: defaults::GROWTH,
-            };
+        match &mut self.options.grid {
+            GridChoice::Modern { resolution: n, .. } => *n = resolution,
+            GridChoice::Seed => self.options.refuse_after_seed("resolution"),
         }
         self
     }
@@ -474,8 +473,9 @@ impl<C> RunBuilder<C> {
     /// A rectangular section of this thickness t/c, exact at every resolution [default: 1/64, or
     /// a physical plate's own].
     pub fn thickness(mut self, thickness: f64) -> Self {
-        if let GridChoice::Modern { section, .. } = &mut self.options.grid {
-            *section = Some(Section::Thickness(thickness));
+        match &mut self.options.grid {
+            GridChoice::Modern { section, .. } => *section = Some(Section::Thickness(thickness)),
+            GridChoice::Seed => self.options.refuse_after_seed("thickness"),
         }
         self
     }
@@ -483,30 +483,35 @@ impl<C> RunBuilder<C> {
     /// The plate's section (rectangle, rounded, ellipse, NACA, polygon) [default: a rectangle
     /// 1/64 thick, or of a physical plate's thickness].
     pub fn shape(mut self, shape: Shape) -> Self {
-        if let GridChoice::Modern { section, .. } = &mut self.options.grid {
-            *section = Some(Section::Shape(shape));
+        match &mut self.options.grid {
+            GridChoice::Modern { section, .. } => *section = Some(Section::Shape(shape)),
+            GridChoice::Seed => self.options.refuse_after_seed("shape"),
         }
         self
     }
 
     /// Distance from the plate to the outer boundary, in chords [default: 15].
     pub fn extent(mut self, extent: f64) -> Self {
-        if let GridChoice::Modern { extent: e, .. } = &mut self.options.grid {
-            *e = extent;
+        match &mut self.options.grid {
+            GridChoice::Modern { extent: e, .. } => *e = extent,
+            GridChoice::Seed => self.options.refuse_after_seed("extent"),
         }
         self
     }
 
     /// Cap on the ratio of neighbouring cell sizes in the stretched region [default: 1.045].
     pub fn growth(mut self, growth: f64) -> Self {
-        if let GridChoice::Modern { growth: g, .. } = &mut self.options.grid {
-            *g = growth;
+        match &mut self.options.grid {
+            GridChoice::Modern { growth: g, .. } => *g = growth,
+            GridChoice::Seed => self.options.refuse_after_seed("growth"),
         }
         self
     }
 
     /// The dissertation's exact grid and plate (N = 16, a rectangle 1/16 thick, 24 × 27 stretched
-    /// intervals over 10 chords), instead of the resolution, section, extent and growth cap.
+    /// intervals over 10 chords), instead of the resolution, section, extent and growth cap
+    /// given before it; `build` refuses any of those given after it
+    /// ([`InputError::Conflict`]).
     pub fn seed_grid(mut self) -> Self {
         self.options.grid = GridChoice::Seed;
         self
@@ -559,6 +564,24 @@ impl<C> RunBuilder<C> {
 }
 
 impl Options {
+    /// Notes a grid option given after `seed_grid()` (the first one is reported).
+    fn refuse_after_seed(&mut self, option: &'static str) {
+        self.after_seed.get_or_insert(option);
+    }
+
+    /// The options, unless one contradicts another.
+    fn checked(self) -> Result<Self, InputError> {
+        match self.after_seed {
+            Some(option) => Err(InputError::Conflict {
+                option,
+                earlier: "seed_grid",
+                why: "the dissertation's grid fixes the resolution, the section, the extent and \
+                      the growth",
+            }),
+            None => Ok(self),
+        }
+    }
+
     /// A pinned or free run: the plate's Reynolds number unless one is given, its thickness
     /// unless one is given.
     fn coupled(
@@ -567,7 +590,8 @@ impl Options {
         body: &BodyOptions,
         default_t_end: f64,
     ) -> Result<ValidatedConfig, InputError> {
-        let re = self
+        let this = self.checked()?;
+        let re = this
             .re
             .or(body.plate.reynolds())
             .ok_or(InputError::Missing {
@@ -575,8 +599,8 @@ impl Options {
                 why: "for a plate without a preset or physical description",
             })?;
         let thickness = body.plate.thickness();
-        let modern = matches!(self.grid, GridChoice::Modern { .. });
-        let mut config = self.config(
+        let modern = matches!(this.grid, GridChoice::Modern { .. });
+        let mut config = this.config(
             case,
             re,
             default_t_end,
@@ -658,6 +682,34 @@ impl Options {
 mod tests {
     use super::*;
     use crate::config::{Fluid, Strip};
+
+    #[test]
+    fn grid_options_after_the_dissertations_grid_are_refused() {
+        let refused = |e: InputError, name: &str| {
+            assert!(
+                matches!(e, InputError::Conflict { option, earlier: "seed_grid", .. } if option == name),
+                "{name}: {e:?}"
+            );
+        };
+        let stat = || RunBuilder::static_plate(0.4).seed_grid();
+        refused(stat().thickness(0.1).build().unwrap_err(), "thickness");
+        refused(stat().shape(Shape::rect(0.1)).build().unwrap_err(), "shape");
+        refused(stat().extent(20.0).build().unwrap_err(), "extent");
+        refused(stat().growth(1.1).build().unwrap_err(), "growth");
+        refused(stat().resolution(32).build().unwrap_err(), "resolution");
+        let forced = RunBuilder::forced(1.0).seed_grid().extent(12.0);
+        refused(forced.build().unwrap_err(), "extent");
+        let free = RunBuilder::free(Plate::card()).seed_grid().thickness(0.02);
+        refused(free.build().unwrap_err(), "thickness");
+        let pinned = RunBuilder::pinned(Plate::card()).seed_grid().growth(1.02);
+        refused(pinned.build().unwrap_err(), "growth");
+        // Given before it, they are replaced by the dissertation's grid, as documented.
+        let seed = RunBuilder::static_plate(0.4)
+            .resolution(32)
+            .thickness(0.1)
+            .seed_grid();
+        assert_eq!(seed.build().unwrap().grid, GridSpec::seed());
+    }
 
     #[test]
     fn the_defaults_follow_the_case() {

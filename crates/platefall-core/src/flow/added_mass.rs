@@ -26,7 +26,9 @@ use super::FlowSolver;
 /// change of (u0, v0, θ̇), at the run's Reynolds number.
 #[derive(Clone, Copy, Debug, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct AddedMass {
+    /// K: the pressure loads per unit change of motion over a unit step.
     pub k: [[f64; 3]; 3],
+    /// S: the shear loads per unit change of motion.
     pub shear: [[f64; 3]; 3],
 }
 
@@ -87,9 +89,9 @@ impl FlowSolver {
     /// flow untouched).
     pub fn added_mass(&mut self) -> AddedMass {
         let (mut k, mut shear) = ([[0.0; 3]; 3], [[0.0; 3]; 3]);
-        let re = self.params.re;
+        let nu = self.params.nu();
         for (col, unit) in UNIT_MOTIONS.iter().enumerate() {
-            let (pressure, all) = self.unit_response(unit, re);
+            let (pressure, all) = self.unit_response(unit, nu);
             let rows = [
                 (pressure.fx, all.fx),
                 (pressure.fy, all.fy),
@@ -104,8 +106,8 @@ impl FlowSolver {
     }
 
     /// The loads of one unit change of motion over a unit step, from fluid at rest: plate faces at
-    /// g(unit), projected, p = φ. Returns (pressure alone, pressure and shear at `re`).
-    fn unit_response(&mut self, unit: &Frame, re: f64) -> (BodyAxesLoads, BodyAxesLoads) {
+    /// g(unit), projected, p = φ. Returns (pressure alone, pressure and shear at viscosity `nu`).
+    fn unit_response(&mut self, unit: &Frame, nu: f64) -> (BodyAxesLoads, BodyAxesLoads) {
         let (nx, ny) = (self.grid.nx, self.grid.ny);
         let mut u = Padded::zeros(nx + 1, ny);
         let mut v = Padded::zeros(nx, ny + 1);
@@ -120,8 +122,8 @@ impl FlowSolver {
             .project(&mut u, &mut v, g, m, (wall, unit), 1.0, &mut p);
         wall.hold(&mut u, &mut v, unit, &rest);
         (
-            wall.loads(&u, &v, &p, unit, f64::INFINITY),
-            wall.loads(&u, &v, &p, unit, re),
+            wall.loads(&u, &v, &p, unit, 0.0),
+            wall.loads(&u, &v, &p, unit, nu),
         )
     }
 }

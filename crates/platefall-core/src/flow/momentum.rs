@@ -13,7 +13,7 @@
 //! interpolation with the Koren limiter (third order where smooth, bounded near steep gradients).
 use super::array::Padded;
 use super::frame::Frame;
-use super::metrics::{Metrics, Ratios};
+use super::metrics::{Component, Metrics, Ratios};
 use super::zones::Zones;
 
 /// κ = 1/3 upwind-biased face value limited by Koren's limiter.
@@ -289,4 +289,23 @@ fn v_row<const SX: bool, const SY: bool>(
             vp,
         );
     }
+}
+
+/// Adds a body force f(x, y, t) at every interior face to H (manufactured solutions).
+pub fn add_forcing(
+    f: &dyn Fn(f64, f64, f64) -> (f64, f64),
+    m: &Metrics,
+    t: f64,
+    hu: &mut Padded,
+    hv: &mut Padded,
+) {
+    let (nx, ny) = (hv.ni as isize, hu.nj as isize);
+    m.for_faces(Component::U, 1..nx, 0..ny, |i, j, x, y| {
+        let k = hu.at(i, j);
+        hu.data[k] += f(x, y, t).0;
+    });
+    m.for_faces(Component::V, 0..nx, 1..ny, |i, j, x, y| {
+        let k = hv.at(i, j);
+        hv.data[k] += f(x, y, t).1;
+    });
 }

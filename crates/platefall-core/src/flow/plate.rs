@@ -1,17 +1,21 @@
 //! The loads on the plate as the solver reports them (docs/physics.md §5): the force and moment in body
 //! axes, and the lift, drag and moment coefficients. How they are computed from the flow is in
-//! `wall::loads`.
+//! `flow/wall/loads.rs`.
 use super::frame::Frame;
 
 /// Force (body axes) and moment about the centre (counter-clockwise positive), per unit span,
 /// non-dimensional on ρU²c and ρU²c².
 #[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct BodyAxesLoads {
+    /// The force along the body x axis (the chord).
     pub fx: f64,
+    /// The force along the body y axis (normal to the chord).
     pub fy: f64,
+    /// The moment about the plate's centre, counter-clockwise positive.
     pub moment: f64,
-    /// The pressure and viscous parts of the force, for reporting.
+    /// The pressure's part of `fx` (the rest is shear), for reporting.
     pub fx_pressure: f64,
+    /// The pressure's part of `fy`, for reporting.
     pub fy_pressure: f64,
 }
 

@@ -15,7 +15,7 @@ use faer::sparse::{SparseColMat, Triplet};
 use super::array::Padded;
 use super::frame::Frame;
 use super::metrics::Metrics;
-use super::split_cholesky::{Part, SplitCholesky};
+use super::split_cholesky::{FactorError, Part, SplitCholesky};
 use super::wall::faces::Faces;
 use super::wall::Wall;
 use crate::grid::Grid;
@@ -37,8 +37,19 @@ pub struct Pressure {
     pub phi: Vec<f64>,
 }
 
-#[derive(Debug)]
-pub struct PressureError(pub String);
+/// Why the pressure operator could not be set up.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum PressureError {
+    /// faer refused the assembled matrix; `detail` is its own message.
+    #[error("assembling the pressure matrix: {detail}")]
+    Assembly {
+        /// faer's message.
+        detail: String,
+    },
+    /// The operator could not be ordered or factored.
+    #[error(transparent)]
+    Factor(#[from] FactorError),
+}
 
 /// How a projection sets the pressure from its potential φ.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -68,7 +79,7 @@ impl Pressure {
         for (k, &r) in unknown.iter().enumerate().filter(|(_, &r)| r != NONE) {
             part[r as usize] = Part::of_column(k % nx, nx / 2);
         }
-        let factor = SplitCholesky::new(a.as_ref(), &part).map_err(PressureError)?;
+        let factor = SplitCholesky::new(a.as_ref(), &part)?;
         for r in unknown.iter_mut().filter(|r| **r != NONE) {
             *r = factor.position[*r as usize];
         }
@@ -277,6 +288,9 @@ fn assemble(
     for (r, d) in diag.iter().enumerate() {
         trip.push(Triplet::new(r as u32, r as u32, *d));
     }
-    SparseColMat::<u32, f64>::try_new_from_triplets(n, n, &trip)
-        .map_err(|e| PressureError(format!("assembling the pressure matrix: {e:?}")))
+    SparseColMat::<u32, f64>::try_new_from_triplets(n, n, &trip).map_err(|e| {
+        PressureError::Assembly {
+            detail: format!("{e:?}"),
+        }
+    })
 }

@@ -2,7 +2,9 @@
 //! field that one step hands to the next, with its ghost layers, bit for bit. What is computed
 //! once from the grid (metrics, the wall, the pressure factor, the zones) is not in it: a solver
 //! built anew from the same grid and parameters has it already.
-use super::{BodyAxesLoads, FlowSolver, Frame};
+use super::frame::Frame;
+use super::plate::BodyAxesLoads;
+use super::FlowSolver;
 
 /// The flow solver's state between two steps; see the module docs.
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]

@@ -29,6 +29,51 @@ use faer::sparse::linalg::SupernodalThreshold;
 use faer::sparse::{SparseColMat, SparseColMatRef, Triplet};
 use faer::{Par, Side};
 
+/// Why the pressure operator could not be ordered or factored.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum FactorError {
+    /// faer refused a step (`stage`: the sub-matrix of a half, AMD ordering, the symbolic or the
+    /// numeric factorisation); `detail` is its own message.
+    #[error("{stage}: {detail}")]
+    Library {
+        /// The step that failed.
+        stage: &'static str,
+        /// faer's message.
+        detail: String,
+    },
+    /// A column of the factor does not start with a positive diagonal (the operator is not
+    /// positive definite).
+    #[error("column {column} of the factor does not start with its diagonal")]
+    Diagonal {
+        /// The column, in the factor's order.
+        column: usize,
+    },
+    /// The rows of a column of the factor are not ascending.
+    #[error("the rows of column {column} of the factor are not ascending")]
+    Unsorted {
+        /// The column, in the factor's order.
+        column: usize,
+    },
+    /// The factor couples the left and right halves (the separator does not separate them).
+    #[error("the factor couples the two halves (column {column})")]
+    CouplesHalves {
+        /// The column, in the factor's order.
+        column: usize,
+    },
+    /// faer returned a supernodal factor where a simplicial one was forced.
+    #[error("the Cholesky factor is not simplicial")]
+    NotSimplicial,
+}
+
+impl FactorError {
+    fn library(stage: &'static str, e: impl std::fmt::Debug) -> FactorError {
+        FactorError::Library {
+            stage,
+            detail: format!("{e:?}"),
+        }
+    }
+}
+
 /// Which block an unknown belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Part {
@@ -81,7 +126,7 @@ pub struct SplitCholesky {
 impl SplitCholesky {
     /// Orders and factors `a` (its lower triangle, in the caller's numbering), `part[r]` naming the
     /// block of unknown r. Left and right unknowns must not be coupled.
-    pub fn new(a: SparseColMatRef<'_, u32, f64>, part: &[Part]) -> Result<Self, String> {
+    pub fn new(a: SparseColMatRef<'_, u32, f64>, part: &[Part]) -> Result<Self, FactorError> {
         let n = a.nrows();
         let blocks = [Part::Left, Part::Right, Part::Separator];
         let mut order: Vec<u32> = Vec::with_capacity(n);
@@ -155,7 +200,7 @@ impl Factor {
         order: &[u32],
         position: &[u32],
         starts: [usize; 3],
-    ) -> Result<Factor, String> {
+    ) -> Result<Factor, FactorError> {
         let (symbolic, values) = factor(a, order, position)?;
         let (col_ptr, row_idx) = structure(&symbolic);
         let n = a.nrows();
@@ -165,20 +210,16 @@ impl Factor {
             let (lo, hi) = (col_ptr[c] as usize, col_ptr[c + 1] as usize);
             let rows = &row_idx[lo..hi];
             if rows.first() != Some(&(c as u32)) || values[lo] <= 0.0 {
-                return Err(format!(
-                    "column {c} of the factor does not start with its diagonal"
-                ));
+                return Err(FactorError::Diagonal { column: c });
             }
             if rows.windows(2).any(|w| w[0] >= w[1]) {
-                return Err(format!(
-                    "the rows of column {c} of the factor are not ascending"
-                ));
+                return Err(FactorError::Unsorted { column: c });
             }
             // Rows below the diagonal that lie outside the column's own block.
             let end = starts.iter().copied().find(|&s| s > c).unwrap_or(n);
             let own = rows.partition_point(|&r| (r as usize) < end);
             if own < rows.len() && (rows[own] as usize) < starts[2] {
-                return Err(format!("the factor couples the two halves (column {c})"));
+                return Err(FactorError::CouplesHalves { column: c });
             }
             mid.push((lo + own) as u32);
             inv_diag.push(1.0 / values[lo]);
@@ -305,7 +346,7 @@ fn dot(rows: &[u32], vals: &[f64], x: &[f64], base: usize) -> f64 {
 }
 
 /// AMD order of the sub-matrix of `a` on `members`: the k-th entry is the index into `members`.
-fn amd_order(a: SparseColMatRef<'_, u32, f64>, members: &[u32]) -> Result<Vec<u32>, String> {
+fn amd_order(a: SparseColMatRef<'_, u32, f64>, members: &[u32]) -> Result<Vec<u32>, FactorError> {
     let nh = members.len();
     let mut local = vec![u32::MAX; a.nrows()];
     for (k, &r) in members.iter().enumerate() {
@@ -320,7 +361,7 @@ fn amd_order(a: SparseColMatRef<'_, u32, f64>, members: &[u32]) -> Result<Vec<u3
         }
     }
     let sub = SparseColMat::<u32, f64>::try_new_from_triplets(nh, nh, &trip)
-        .map_err(|e| format!("a half of the pressure matrix: {e:?}"))?;
+        .map_err(|e| FactorError::library("a half of the pressure matrix", e))?;
     let (mut perm, mut perm_inv) = (vec![0u32; nh], vec![0u32; nh]);
     let mut mem = MemBuffer::new(amd::order_scratch::<u32>(nh, trip.len()));
     amd::order(
@@ -330,7 +371,7 @@ fn amd_order(a: SparseColMatRef<'_, u32, f64>, members: &[u32]) -> Result<Vec<u3
         amd::Control::default(),
         MemStack::new(&mut mem),
     )
-    .map_err(|e| format!("AMD ordering: {e:?}"))?;
+    .map_err(|e| FactorError::library("AMD ordering", e))?;
     Ok(perm)
 }
 
@@ -348,7 +389,7 @@ fn factor(
     a: SparseColMatRef<'_, u32, f64>,
     order: &[u32],
     position: &[u32],
-) -> Result<(SymbolicCholesky<u32>, Vec<f64>), String> {
+) -> Result<(SymbolicCholesky<u32>, Vec<f64>), FactorError> {
     let perm = PermRef::new_checked(order, position, order.len());
     let params = CholeskySymbolicParams {
         supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SIMPLICIAL,
@@ -360,7 +401,7 @@ fn factor(
         SymmetricOrdering::Custom(perm),
         params,
     )
-    .map_err(|e| format!("symbolic Cholesky: {e:?}"))?;
+    .map_err(|e| FactorError::library("symbolic Cholesky", e))?;
     let mut values = vec![0.0; symbolic.len_val()];
     let req = symbolic.factorize_numeric_llt_scratch::<f64>(Par::Seq, Default::default());
     let mut stack = MemBuffer::new(req);
@@ -374,9 +415,9 @@ fn factor(
             MemStack::new(&mut stack),
             Default::default(),
         )
-        .map_err(|e| format!("numeric Cholesky: {e:?}"))?;
+        .map_err(|e| FactorError::library("numeric Cholesky", e))?;
     if !matches!(symbolic.raw(), SymbolicCholeskyRaw::Simplicial(_)) {
-        return Err("the Cholesky factor is not simplicial".into());
+        return Err(FactorError::NotSimplicial);
     }
     Ok((symbolic, values))
 }

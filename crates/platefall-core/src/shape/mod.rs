@@ -106,18 +106,6 @@ pub enum ShapeError {
     NoArea,
 }
 
-impl ShapeError {
-    /// The input the error is about.
-    pub fn param(&self) -> crate::param::Param {
-        use crate::param::Param;
-        match self {
-            ShapeError::Thickness(_) => Param::Thickness,
-            ShapeError::EdgeRadius { .. } => Param::EdgeRadius,
-            _ => Param::Polygon,
-        }
-    }
-}
-
 impl Shape {
     /// A sharp-cornered rectangle of the given thickness (chords).
     pub fn rect(thickness: f64) -> Shape {
@@ -312,6 +300,15 @@ fn rounded(t: f64, r: f64) -> Outline {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_circle_is_as_wide_as_its_diameter_across_any_stream() {
+        let circle = Shape::Ellipse { thickness: 1.0 }.outline();
+        for a in [0.0, 0.4, -1.2, 0.5 * PI, 2.5] {
+            let (s, c) = f64::sin_cos(a);
+            assert!((circle.width_across([c, s]) - 1.0).abs() < 1e-3, "{a}");
+        }
+    }
 
     /// The radius of the circle through three points.
     fn circumradius(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> f64 {

@@ -7,41 +7,8 @@
 //! a validated configuration and puts it back, so the next step is the one the saved run would
 //! have taken, bit for bit. Writing it to a file is the caller's (the record crate's
 //! `checkpoint` module): the core does no I/O.
+use super::saved::{RestoreError, SimState};
 use super::{History, Motion, Simulation, ValidatedConfig};
-use crate::body::{AbError, BodySnapshot, BodyState};
-use crate::flow::{FlowState, StateMismatch};
-
-/// A run's state between two steps; see the module docs.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-pub struct SimState {
-    /// The flow solver's fields and time levels.
-    pub flow: FlowState,
-    /// The plate's state.
-    pub state: BodyState,
-    /// The coupled plate's body (None for prescribed motion) and whether it is released.
-    pub body: Option<(BodySnapshot, bool)>,
-    /// θ at the release, for counting turns.
-    pub theta_release: Option<f64>,
-    /// Every step's samples so far (the summary's accumulators).
-    pub history: History,
-}
-
-/// Why a saved state cannot be put back into a run of this configuration.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum RestoreError {
-    /// Building the run failed.
-    #[error(transparent)]
-    Build(#[from] super::SimError),
-    /// The flow fields do not fit the grid.
-    #[error(transparent)]
-    Flow(#[from] StateMismatch),
-    /// The plate's history does not fit.
-    #[error(transparent)]
-    Body(#[from] AbError),
-    /// A prescribed motion with a saved free body, or the other way round.
-    #[error("the saved state is of another motion law (prescribed versus coupled)")]
-    Motion,
-}
 
 impl Simulation {
     /// The run's state between two steps, with the steps' `history` (what

@@ -28,15 +28,16 @@ mod history;
 mod motion;
 mod output;
 mod sample;
+mod saved;
 mod spec;
 mod timestep;
 
-pub use checkpoint::{RestoreError, SimState};
 pub use error::SimError;
 pub use history::{History, Quantity, DEFAULT_CAPACITY};
 pub use motion::{Case, CaseKind};
 pub use output::{FieldSnapshot, RunRecord, RunStatus, StatusKind};
 pub use sample::StepSample;
+pub use saved::{RestoreError, SimState};
 pub use spec::{BodyConfig, PlateSource, ReferenceScales, RunConfig, TimeControl, ValidatedConfig};
 pub use timestep::{choose_dt, MAX_GROWTH};
 
@@ -171,34 +172,34 @@ impl Simulation {
     /// The sample describing the current state.
     pub fn sample(&self) -> StepSample {
         let f = &self.flow;
-        StepSample::new(f.steps, f.t, f.dt_prev, f.coefficients(), &self.state)
+        StepSample::new(f.steps(), f.t(), f.dt_prev(), f.coefficients(), &self.state)
     }
 
     /// A snapshot of the flow fields.
     pub fn snapshot(&self) -> FieldSnapshot {
         let (u, v) = self.flow.velocity_arrays();
         FieldSnapshot {
-            step: self.flow.steps,
-            t: self.flow.t,
+            step: self.flow.steps(),
+            t: self.flow.t(),
             x: self.state.x,
             y: self.state.y,
             theta: self.state.theta,
-            frame: self.flow.frame,
+            frame: *self.flow.frame(),
             u,
             v,
-            p: self.flow.p.clone(),
+            p: self.flow.p().to_vec(),
         }
     }
 
     /// One coupled step. Returns the new sample.
     pub fn step(&mut self) -> Result<StepSample, SimError> {
         let limit = self.flow.prepare()?;
-        let t = self.flow.t;
+        let t = self.flow.t();
         let dt = timestep::choose_dt(
             t,
             limit,
             self.state.omega,
-            self.flow.dt_prev,
+            self.flow.dt_prev(),
             self.release_time(),
             &self.config.time,
         );
@@ -250,7 +251,7 @@ impl Simulation {
             Some(sc) => {
                 let rest = sc
                     .added
-                    .rest(&l, &flow.frame, &flow.frame_prev, flow.dt_prev);
+                    .rest(&l, flow.frame(), flow.frame_prev(), flow.dt_prev());
                 let f = sc.derivative(&body.props, *dof, &body.state, rest, dt);
                 body.step_with(t, f, dt);
             }
@@ -264,7 +265,7 @@ impl Simulation {
 
     /// Whether the run is over (t_end reached, or the requested turns after release).
     pub fn finished(&self) -> bool {
-        if self.flow.t >= self.config.time.t_end - 1e-9 {
+        if self.flow.t() >= self.config.time.t_end - 1e-9 {
             return true;
         }
         match (self.config.time.turns, self.theta_release) {
@@ -308,7 +309,7 @@ impl Simulation {
             status,
             samples,
             t_release: self.release_time(),
-            cells: self.flow.grid.cells(),
+            cells: self.flow.grid().cells(),
             recirculation_length,
         }
     }

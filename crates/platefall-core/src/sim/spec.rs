@@ -10,7 +10,7 @@ use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use super::checks::check_phases;
 use super::motion::Case;
 use crate::body::{AbStart, Coupling, PlateProps};
-use crate::flow::FlowParams;
+use crate::flow::{check_representable, FlowParams};
 use crate::grid::{Grid, GridSpec};
 use crate::param::{check_range, check_whole, rounded, InputError, Param};
 use crate::shape::Shape;
@@ -179,7 +179,7 @@ impl RunConfig {
     /// Checks every value; the first bad one is reported.
     fn check(&self) -> Result<(), InputError> {
         self.grid.validate()?;
-        self.grid.check_representable()?;
+        check_representable(&self.grid)?;
         self.flow.validate()?;
         let t = &self.time;
         check_range(Param::TEnd, t.t_end, 0.0, 1e5, true)?;

@@ -6,6 +6,9 @@ use rerun::components::Colormap;
 
 use platefall_core::sim::StepSample;
 
+/// Rerun application id of every recording.
+pub const APPLICATION_ID: &str = "platefall";
+
 /// Entity paths (stable; see the crate docs (`lib.rs`)).
 pub mod paths {
     /// Inertial frame, physical coordinates (Y up, gravity −Y).

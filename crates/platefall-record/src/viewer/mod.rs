@@ -32,11 +32,11 @@ use rerun::RecordingStream;
 use super::messages::{ConnectReport, RecordingError, RunInfo, RunOutcome, ViewerRefusal};
 use super::options::RecordOptions;
 use super::output::OutputError;
-pub use layout::paths;
+pub use layout::{paths, APPLICATION_ID};
 pub use phase::write_phase_recording;
 use platefall_core::sim::{FieldSnapshot, StepSample};
 pub use read::read_recording;
-use rrd_file::RrdFile;
+use rrd_file::{commit_file, RrdFile, FLUSH_LIMIT};
 use scene::Scene;
 use sinks::{open_sinks, ConnectStats};
 use web::WebServer;
@@ -44,9 +44,6 @@ pub use web::WEB_AVAILABLE;
 
 /// This build can record for Rerun.
 pub const AVAILABLE: bool = true;
-
-/// Rerun application id of every recording.
-pub const APPLICATION_ID: &str = "platefall";
 
 /// What the viewer side produced, after [`Viewer::finish`].
 pub struct ViewerReport {
@@ -207,26 +204,6 @@ impl Viewer {
             notes,
         }
     }
-}
-
-/// Longest the end of a run waits for the recording to reach its sinks.
-const FLUSH_LIMIT: Duration = Duration::from_secs(30);
-
-/// Flushes the stream into the file and commits it: the file's name and size, or why not (then
-/// nothing is left at the final name).
-fn commit_file(rec: &RecordingStream, file: &RrdFile) -> Result<(PathBuf, u64), OutputError> {
-    let before = file.flushes();
-    let _ = rec.flush_with_timeout(FLUSH_LIMIT);
-    let result = if file.flushes() > before {
-        file.commit()
-    } else {
-        file.discard();
-        Err(file.fail(format!(
-            "the recording did not reach the file within {} s",
-            FLUSH_LIMIT.as_secs()
-        )))
-    };
-    result
 }
 
 /// A note for the report when the --connect viewer missed messages.

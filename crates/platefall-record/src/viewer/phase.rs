@@ -11,7 +11,7 @@ use rerun::{
     AnyValues, Color, EntityPath, EntityPathPart, LineStrips2D, Points2D, RecordingStream,
 };
 
-use super::commit_file;
+use super::rrd_file::commit_file;
 use super::rrd_file::{RrdFile, RrdSink};
 use super::text::document;
 use crate::output::OutputError;

@@ -11,6 +11,7 @@ use std::time::Duration;
 use rerun::external::re_log_encoding::{CrateVersion, Encoder, EncodingOptions};
 use rerun::log::LogMsg;
 use rerun::sink::{LogSink, SinkFlushError};
+use rerun::RecordingStream;
 
 use crate::output::{LinkCheck, OutputError, PendingFile};
 
@@ -158,4 +159,27 @@ impl LogSink for RrdSink {
         file.flushes.fetch_add(1, Ordering::SeqCst);
         result.map_err(SinkFlushError::failed)
     }
+}
+
+/// Longest the end of a run waits for the recording to reach its sinks.
+pub(super) const FLUSH_LIMIT: Duration = Duration::from_secs(30);
+
+/// Flushes the stream into the file and commits it: the file's name and size, or why not (then
+/// nothing is left at the final name).
+pub(super) fn commit_file(
+    rec: &RecordingStream,
+    file: &RrdFile,
+) -> Result<(PathBuf, u64), OutputError> {
+    let before = file.flushes();
+    let _ = rec.flush_with_timeout(FLUSH_LIMIT);
+    let result = if file.flushes() > before {
+        file.commit()
+    } else {
+        file.discard();
+        Err(file.fail(format!(
+            "the recording did not reach the file within {} s",
+            FLUSH_LIMIT.as_secs()
+        )))
+    };
+    result
 }

@@ -16,7 +16,7 @@ use rerun::external::re_sdk_types::{AsComponents, SerializedComponentBatch};
 use rerun::log::LogMsg;
 use rerun::{RecordingStream, RecordingStreamBuilder, RecordingStreamResult, StoreKind};
 
-use super::APPLICATION_ID;
+use super::layout::APPLICATION_ID;
 
 /// Properties to set on views of a blueprint, by the views' blueprint paths.
 #[derive(Default)]

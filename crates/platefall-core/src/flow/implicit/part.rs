@@ -2,7 +2,8 @@
 //! of the factored system, and the boundary increments the sweeps start from.
 use std::ops::Range;
 
-use super::{blend, line_velocity, Weights};
+use super::grid_velocity::{blend, line_velocity};
+use super::weights::Weights;
 use crate::flow::array::Padded;
 use crate::flow::band::End;
 use crate::flow::boundary::VelocityFn;
@@ -161,7 +162,7 @@ impl Part {
                 Component::U => (p[c] - p[c - 1]) * m.u_x.inv_cv[i as usize],
                 Component::V => (p[c] - p[c - nx]) * m.v_y.inv_cv[j as usize],
             };
-            let mut r = dt * (w.ab_new * x.h.data[k] + w.ab_old * x.h_old.data[k] - gp);
+            let mut r = dt * (w.ab.new * x.h.data[k] + w.ab.old * x.h_old.data[k] - gp);
             if sx || sy {
                 let (now, blended) = self.transport(q, (sx, sy), i, j, wx);
                 r -= dt * (blended + w.g0 * self.lq_old.data[k]);

@@ -1,5 +1,6 @@
 //! The incremental pressure of the implicit far field (docs/physics.md §3): p += A φ/Δt.
-use super::{line_velocity, Part};
+use super::grid_velocity::line_velocity;
+use super::part::Part;
 use crate::flow::frame::Frame;
 use crate::flow::metrics::{Component, Metrics};
 use crate::flow::zones::Zones;

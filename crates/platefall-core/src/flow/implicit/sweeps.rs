@@ -1,6 +1,8 @@
 //! The line sweeps of the factored system (`band.rs`): (I + t L_x) W = R along the split rows,
 //! then (I + t L_y) Δ = W along the split columns, t = γ₂Δt, with the frame at n+1.
-use super::{line_velocity, GhostEnds, Part};
+use super::ghost_ends::GhostEnds;
+use super::grid_velocity::line_velocity;
+use super::part::Part;
 use crate::flow::band::{solve_columns, solve_line, End};
 use crate::flow::frame::Frame;
 use crate::flow::metrics::{Component, Metrics};

@@ -14,6 +14,9 @@ use crate::flow::metrics::Component;
 use crate::grid::Grid;
 use crate::shape::{Covered, Outline};
 
+/// Points within this fraction of h of the boundary count as on it.
+pub const ON_BOUNDARY: f64 = 1e-9;
+
 /// A face is a fluid unknown only if at least this fraction of it is open (a sliver with less
 /// is held: it would join its cells through a vanishing coefficient).
 pub const MIN_APERTURE: f64 = 1e-6;

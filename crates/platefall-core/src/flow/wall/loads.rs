@@ -17,7 +17,7 @@
 //! Between neighbouring samples the wall value is interpolated linearly in arc length (hat
 //! weights), and held constant from the last sample to a corner; the integrals of the weights
 //! times 1, n, r × n, x and y along the polygon are exact, so the sums are the trapezoidal rule of
-//! the load integrals: F = ∫(−p n + μ a) ds, M = ∫ r × (−p n + μ a) ds (`tests/wall_loads.rs`
+//! the load integrals: F = ∫(−p n + μ a) ds, M = ∫ r × (−p n + μ a) ds (`wall/loads_convergence.rs`
 //! measures their order against manufactured fields).
 //! A velocity point closer to the wall than half a spacing is a forced point (`stencils`): a
 //! straight line between the wall and the next point: it adds nothing to the quadratic but would
@@ -167,8 +167,8 @@ impl Loads {
         loads
     }
 
-    /// Force (body axes) and moment of the fluid on the plate; shear at Reynolds number `re`
-    /// (∞: pressure alone).
+    /// Force (body axes) and moment of the fluid on the plate; shear at kinematic viscosity `nu`
+    /// (0: pressure alone).
     pub fn evaluate(
         &self,
         u: &Padded,
@@ -176,7 +176,7 @@ impl Loads {
         p: &[f64],
         nx: usize,
         frame: &Frame,
-        re: f64,
+        nu: f64,
     ) -> BodyAxesLoads {
         let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
         for s in &self.pressure {
@@ -191,7 +191,7 @@ impl Loads {
             mz -= pw * s.share.r_cross_n;
         }
         let (fx_pressure, fy_pressure) = (fx, fy);
-        let mu = 1.0 / re;
+        let mu = nu;
         if mu > 0.0 {
             for (c, samples, field) in [(Component::U, &self.u, u), (Component::V, &self.v, v)] {
                 for s in samples {
@@ -225,16 +225,6 @@ impl Loads {
             fx_pressure,
             fy_pressure,
         }
-    }
-
-    /// Number of samples (pressure, u, v), for reports.
-    pub fn counts(&self) -> (usize, usize, usize) {
-        (self.pressure.len(), self.u.len(), self.v.len())
-    }
-
-    /// The total boundary length the pressure samples stand for (the outline's perimeter).
-    pub fn perimeter(&self) -> f64 {
-        self.pressure.iter().map(|s| s.share.len).sum()
     }
 }
 

@@ -7,7 +7,8 @@
 //! - [`faces`]: held faces (the plate's rigid velocity g), fluid faces with their apertures,
 //!   cells that carry a pressure, and the flux corrections of cut faces;
 //! - [`stencils`]: the wall flux and the forced points of the momentum equations;
-//! - [`loads`]: the force and moment to second order.
+//! - [`loads`]: the force and moment to second order;
+//! - [`thinness`]: whether the grid can follow the plate at all ([`check_representable`]).
 //!
 //! A rectangle's faces lie on grid lines (the grid is fitted to it): no face is cut, every held
 //! face is inside or on the plate, and δ = ½ on every wall line, so the scheme is the classical
@@ -16,29 +17,23 @@ pub mod faces;
 pub mod lines;
 pub mod loads;
 pub mod stencils;
+pub mod thinness;
 
-use faces::{Defect, Faces};
+#[cfg(test)]
+mod loads_convergence;
+
+use faces::{Faces, ON_BOUNDARY};
 use lines::Lines;
 use loads::Loads;
 use stencils::{near_wall_velocity, wall_velocity, Stencils};
+
+pub use thinness::check_representable;
 
 use super::array::Padded;
 use super::frame::Frame;
 use super::metrics::{Component, Metrics};
 use super::plate::BodyAxesLoads;
 use crate::grid::Grid;
-
-/// Points within this fraction of h of the boundary count as on it.
-const ON_BOUNDARY: f64 = 1e-9;
-
-/// Where the plate of `grid` is thinner than the grid can follow (a face with fluid on both
-/// sides of the plate), if anywhere: the first such face's point.
-pub fn first_defect(grid: &Grid) -> Option<[f64; 2]> {
-    let body = grid.body.as_ref()?;
-    let lines = Lines::new(grid, body);
-    let faces = Faces::new(grid, body, &lines, ON_BOUNDARY * grid.h);
-    faces.defects.first().map(|d| d.at)
-}
 
 /// Everything the solver knows of the plate.
 #[derive(Clone, Debug)]
@@ -71,11 +66,6 @@ impl Wall {
             loads,
             nx: grid.nx,
         }
-    }
-
-    /// Places where the plate is thinner than the grid can follow.
-    pub fn defects(&self) -> &[Defect] {
-        &self.faces.defects
     }
 
     /// No-slip at the new time level: held faces carry the plate's motion `now` over their
@@ -115,16 +105,16 @@ impl Wall {
         self.stencils.apply(u, v, frame, hu, hv);
     }
 
-    /// Loads of the fluid on the plate (shear at Reynolds number `re`; ∞ for pressure alone).
+    /// Loads of the fluid on the plate (shear at kinematic viscosity `nu`; 0 for pressure alone).
     pub fn loads(
         &self,
         u: &Padded,
         v: &Padded,
         p: &[f64],
         frame: &Frame,
-        re: f64,
+        nu: f64,
     ) -> BodyAxesLoads {
-        self.loads.evaluate(u, v, p, self.nx, frame, re)
+        self.loads.evaluate(u, v, p, self.nx, frame, nu)
     }
 
     /// Adds to each cell's outflow the part of its cut faces that lies inside the plate,

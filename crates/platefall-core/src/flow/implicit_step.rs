@@ -1,16 +1,18 @@
-//! Phase 2 of a step with the implicit far field (docs/physics.md §3; the scheme is described in
-//! `implicit/mod.rs`): the right-hand side, the boundary values at n+1, the row and column
-//! sweeps, the plate's faces, and the projection with the incremental pressure.
-use super::boundary::Outflow;
+//! The implicit far field's variants of the step's phases (docs/physics.md §3; the scheme is
+//! described in `implicit/mod.rs`): the predictor (the right-hand side, the boundary values at
+//! n+1, the row and column sweeps) and the projection with the incremental pressure.
+use super::boundary::{OuterBc, Outflow};
+use super::frame::Frame;
 use super::implicit::{self, GhostEnds, Inputs, Part, State, Weights};
 use super::metrics::Component;
 use super::pressure::PressureUpdate;
-use super::{FlowSolver, Frame, OuterBc};
+use super::FlowSolver;
 
 impl FlowSolver {
     /// The predictor of the implicit far field (see `implicit/mod.rs`): the right-hand side, the
-    /// boundary values at n+1, the row and column sweeps, u* = uⁿ + Δ, and the plate faces.
-    pub(super) fn predict_implicit(&mut self, dt: f64, next: Frame) {
+    /// boundary values at n+1, the row and column sweeps and u* = uⁿ + Δ, from the frames at n
+    /// (`frame_prev`) and n+1 (`frame`).
+    pub(super) fn predict_implicit(&mut self, dt: f64) {
         let Some(mut state) = self.implicit.take() else {
             return;
         };
@@ -19,7 +21,7 @@ impl FlowSolver {
         }
         let w = Weights::new(dt, if self.steps == 0 { 0.0 } else { self.dt_prev });
         state.g2 = w.g2;
-        let f0 = self.frame;
+        let (f0, next) = (self.frame_prev, self.frame);
         let (pu, pv) = (&mut state.u, &mut state.v);
         let (xu, xv) = (
             self.inputs(Component::U, &f0, &next),
@@ -28,7 +30,6 @@ impl FlowSolver {
         rayon::join(|| pu.assemble(&xu, &w, dt), || pv.assemble(&xv, &w, dt));
         std::mem::swap(&mut self.hu, &mut self.hu_old);
         std::mem::swap(&mut self.hv, &mut self.hv_old);
-        self.frame = next;
         self.implicit_boundary(pu, pv, dt);
         let (m, z, a) = (&self.metrics, &self.zones, w.g2 * dt);
         let rule = GhostEnds::of(&self.outer);
@@ -48,7 +49,6 @@ impl FlowSolver {
             },
         );
         self.implicit = Some(state);
-        self.impose_plate();
     }
 
     /// The projection of the implicit far field: the velocity as usual, and the incremental
@@ -116,9 +116,10 @@ impl FlowSolver {
     }
 
     /// The incremental pressure's start: p⁰ is the potential of the gradient part of the full
-    /// right-hand side at t = 0 (so a steady flow, e.g. rigid rotation, starts in balance).
+    /// right-hand side at t = 0 (so a steady flow, e.g. rigid rotation, starts in balance), with
+    /// the motion at t = 0 (`frame_prev` once the step has begun).
     fn start_pressure(&mut self, state: &mut State) {
-        let f0 = self.frame;
+        let f0 = self.frame_prev;
         let (xu, xv) = (
             self.inputs(Component::U, &f0, &f0),
             self.inputs(Component::V, &f0, &f0),

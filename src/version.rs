@@ -1,5 +1,6 @@
-//! What the program is built from: its version and the commit of its sources (`build.rs`), as
-//! `platefall --version`, the summaries and the recordings name it.
+//! The program's name, version and the commit its sources come from (`build.rs`), as
+//! `platefall --version`, the summaries, the recordings, checkpoints and a sweep's children state
+//! it (docs/user-guide.md, "Recordings").
 
 /// The commit the program is built from: "commit 0123456789ab", "commit 0123456789ab, modified"
 /// (the work tree differed from it), or "commit unknown" (no git and no `git archive` stamp).
@@ -12,6 +13,12 @@ pub const VERSION: &str = concat!(
     env!("PLATEFALL_COMMIT"),
     ")"
 );
+
+/// "platefall X.Y.Z": what a checkpoint must have been written by to be read back (a checkpoint
+/// stays readable across commits of one release).
+pub(crate) fn program_version() -> String {
+    format!("platefall {}", env!("CARGO_PKG_VERSION"))
+}
 
 /// The program, its version and commit, as the summaries and recordings name it, e.g.
 /// "platefall 0.1.0 (commit 0123456789ab)".
@@ -30,6 +37,7 @@ mod tests {
         let named = hash.len() == 12 && hash.chars().all(|c| c.is_ascii_hexdigit());
         assert!(named || COMMIT == "commit unknown", "{COMMIT}");
         assert!(VERSION.starts_with(env!("CARGO_PKG_VERSION")));
+        assert!(program_and_commit().starts_with(&program_version()));
         assert!(program_and_commit().ends_with(&format!("({COMMIT})")));
     }
 }
