@@ -63,7 +63,7 @@ pub enum Command {
     #[command(after_help = Exit::help(false))]
     Resume(ResumeArgs),
     /// What a recording is: the run's title, the program and commit that made it, its command
-    /// line, input files, steps, report (and with --json its configuration and summary).
+    /// line, input files, steps, report and configuration (with --json also its summary JSON).
     Info(InfoArgs),
     /// Run a recording's run again from the recording alone (its arguments and input files) and
     /// compare every recorded step with it bit for bit: "identical", or the first step, time and

@@ -1,6 +1,7 @@
 //! `platefall info FILE.rrd`: what a recording is, read from the recording alone: its title,
 //! the program and commit that made it, the command line and directory, the input files it
-//! carries, its steps and time span, the report and the configuration.
+//! carries, its steps and time span, the configuration and the report with its summary
+//! (docs/user-guide.md, "A recording for a bug report").
 use std::path::PathBuf;
 
 use clap::Args;
@@ -16,7 +17,7 @@ use platefall_record::viewer::read_recording;
 pub struct InfoArgs {
     /// The recording (.rrd) a platefall run wrote
     pub file: PathBuf,
-    /// Also print the configuration and the summary as JSON
+    /// Also print the summary as JSON (as --summary writes it)
     #[arg(long)]
     pub json: bool,
 }
@@ -27,8 +28,6 @@ pub fn run_info(args: &InfoArgs) -> anyhow::Result<Exit> {
     let recorded = read_recording(&args.file)?;
     print!("{}", describe(&args.file, &recorded));
     if args.json {
-        let config = serde_json::to_string_pretty(&recorded.invocation.config)?;
-        println!("\nConfiguration (JSON):\n{config}");
         let summary = recorded.summary_json.as_deref().unwrap_or("null");
         println!("\nSummary (JSON):\n{summary}");
     }
@@ -61,6 +60,9 @@ pub fn describe(file: &std::path::Path, r: &Recorded) -> String {
         );
     }
     out += &format!("  steps:     {}\n", span(r));
+    // (Cannot fail for a JSON value.)
+    let config = serde_json::to_string_pretty(&r.invocation.config).unwrap_or_default();
+    out += &format!("\nConfiguration:\n{config}\n");
     match &r.report {
         Some(report) => out += &format!("\nReport:\n{report}"),
         None => out += "\nThe recording ends before the run did: it has no report.\n",

@@ -42,3 +42,10 @@ pub fn summary_json(invocation: &Invocation, summary: &Summary) -> String {
     // (Cannot fail for plain data; never leave the logger unfinished over it.)
     serde_json::to_string_pretty(&file).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
 }
+
+/// The report `text` with the program, version and commit of `invocation` as its second line
+/// (after the title line).
+pub fn with_version(text: &str, invocation: &Invocation) -> String {
+    let (title, rest) = text.split_once('\n').unwrap_or((text, ""));
+    format!("{title}\nprogram {}\n{rest}", invocation.version)
+}

@@ -111,7 +111,7 @@ pub(super) fn execute(
         .then(|| r.checkpoints.as_ref().map(|c| c.path().to_path_buf()))
         .flatten();
     let summary = summarize(r.sim.config(), &rec, wall_seconds);
-    let text = report(r.sim.config(), &summary);
+    let text = super::provenance::with_version(&report(r.sim.config(), &summary), &invocation);
     let summary_json = super::provenance::summary_json(&invocation, &summary);
     let (log_report, mut failures) = finish_logger(logger, &rec.status, &summary_json, &text);
     failures.extend(ckpt_failure);
