@@ -56,16 +56,43 @@ pub struct Recorded {
 /// A file that is not a complete platefall recording.
 #[derive(Debug, thiserror::Error)]
 pub enum ReadError {
+    /// The file cannot be opened.
     #[error("{}: cannot open it: {why}", .path.display())]
-    Open { path: PathBuf, why: String },
+    Open {
+        /// The file.
+        path: PathBuf,
+        /// The system's reason.
+        why: String,
+    },
+    /// The file is not a Rerun recording.
     #[error("{}: not a readable Rerun recording ({why})", .path.display())]
-    Undecodable { path: PathBuf, why: String },
+    Undecodable {
+        /// The file.
+        path: PathBuf,
+        /// The decoder's reason.
+        why: String,
+    },
+    /// The recording has no footer: its writer did not finish it.
     #[error("{}: the recording is truncated (it has no footer): copy it again, or record the run again", .path.display())]
-    Truncated { path: PathBuf },
+    Truncated {
+        /// The file.
+        path: PathBuf,
+    },
+    /// A Rerun recording without platefall's invocation document.
     #[error("{}: a Rerun recording, but not one platefall made (it has no /run/invocation)", .path.display())]
-    NotPlatefall { path: PathBuf },
+    NotPlatefall {
+        /// The file.
+        path: PathBuf,
+    },
+    /// The invocation document is not one this program reads.
     #[error("{}: its /run/invocation is not one this platefall reads ({why})", .path.display())]
-    Invocation { path: PathBuf, why: String },
+    Invocation {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with the document.
+        why: String,
+    },
+    /// This build cannot read recordings.
     #[error("this platefall is built without the `viewer` feature: it cannot read recordings")]
     NoViewer,
 }
