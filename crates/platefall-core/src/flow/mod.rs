@@ -41,8 +41,8 @@
 //! - this one: the struct, construction, `prepare` and the phases of `advance`;
 //! - `implicit_step.rs`: the implicit far field's predictor and incremental projection;
 //! - `accessors.rs`: the state read from outside (fields, motion, time, loads, sizes);
-//! - `snapshot.rs`: checkpoints; `added_mass.rs`: the added-mass response; `wake.rs`: the
-//!   recirculation length.
+//! - `snapshot.rs`: checkpoints (the saved data in `state.rs`); `added_mass_response.rs`: the
+//!   added-mass response (the matrices in `added_mass.rs`); `wake.rs`: the recirculation length.
 //!
 //! The other files hold no solver state: `params.rs` and `error.rs` (inputs and errors),
 //! `far_field.rs` (the far-field scheme's start), `limits.rs` (stable Δt), `ab2.rs` (time
@@ -55,6 +55,7 @@
 mod ab2;
 mod accessors;
 mod added_mass;
+mod added_mass_response;
 mod array;
 mod band;
 mod boundary;
@@ -71,6 +72,7 @@ mod plate;
 mod pressure;
 mod snapshot;
 mod split_cholesky;
+mod state;
 mod transport;
 mod wake;
 mod wall;
@@ -87,8 +89,8 @@ pub use metrics::{Axis, Metrics};
 pub use params::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
 pub use plate::BodyAxesLoads;
 pub use pressure::PressureError;
-pub use snapshot::{FlowState, StateMismatch};
 pub use split_cholesky::FactorError;
+pub use state::{FlowState, StateMismatch};
 pub use wall::check_representable;
 pub use zones::PlateCrossing;
 
