@@ -50,6 +50,9 @@ pub struct FileGraph {
     pub files: Vec<String>,
     /// For each arrow (from, to) between file indices, the first line of `from` that names `to`.
     pub arrows: BTreeMap<(usize, usize), (usize, String)>,
+    /// The files compiled for unit tests only (declared under `#[cfg(test)]`, or inside such a
+    /// module).
+    pub unit_test_files: BTreeSet<String>,
 }
 
 impl FileGraph {
@@ -150,9 +153,14 @@ pub fn crate_graph(workspace: &Path, root: &str) -> FileGraph {
         }
     }
     let rel = |p: &PathBuf| p.strip_prefix(workspace).unwrap_or(p).display().to_string();
+    let unit_test_files = (0..files.len())
+        .filter(|&f| modules[file_top[f]].test)
+        .map(|f| rel(&files[f]))
+        .collect();
     FileGraph {
         files: files.iter().map(rel).collect(),
         arrows,
+        unit_test_files,
     }
 }
 
