@@ -39,7 +39,9 @@ pub mod param;
 
 pub mod body;
 pub mod flow;
+pub mod flow3d;
 pub mod grid;
+pub mod poisson3;
 pub mod sim;
 
 pub mod config;

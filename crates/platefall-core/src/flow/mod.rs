@@ -86,6 +86,8 @@ pub use error::{FlowError, SetupError};
 pub use frame::Frame;
 pub use limits::{combined_dt_limit, viscous_dt_limit, BLOWUP_FACTOR};
 pub use metrics::{Axis, Metrics};
+/// The κ = 1/3 limited face value, shared with the three-dimensional solver (`flow3d`).
+pub(crate) use momentum::face_value;
 pub use params::{FarFieldScheme, FlowParams, NEAR_DEFAULT};
 pub use plate::BodyAxesLoads;
 pub use pressure::PressureError;

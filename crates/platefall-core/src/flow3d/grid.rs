@@ -1,0 +1,236 @@
+//! The body-fixed stretched Cartesian grid in three dimensions (docs/physics.md §4 and §9).
+//!
+//! The plate is the box [−½, ½] × [−t/2, t/2] × [−b/2, b/2] (chord 1 along x, thickness t along
+//! y, span b along z). Along each axis the grid holds the plate's extent in a uniform core whose
+//! nodes fall on the plate's faces (exact at every resolution: round(L/h) cells, at least one, of
+//! L/round(L/h)), and outside it the same geometric patches as in 2-D ([`stretched_offsets`])
+//! with first interval h = 1/N, as many intervals as keep the growth ratio under its cap (or a
+//! given number). With a periodic span the z axis is one uniform period of b (the plate spans it
+//! whole: an infinite span).
+use super::error::Flow3Error;
+use crate::grid::{intervals_for_growth, stretched_offsets};
+
+/// The span of the plate.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Span {
+    /// A plate of this span (chords) with free tips, the grid stretched beyond them.
+    Finite(f64),
+    /// An infinite plate: z is periodic with this period (chords), uniform spacing.
+    Periodic(f64),
+}
+
+impl Span {
+    /// The span or period in chords.
+    pub fn length(&self) -> f64 {
+        match *self {
+            Span::Finite(b) | Span::Periodic(b) => b,
+        }
+    }
+}
+
+/// How many intervals the stretched patches have.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Stretch3 {
+    /// As few as keep the growth ratio at or below this cap (1 gives uniform spacing h).
+    GrowthCap(f64),
+    /// Exactly this many intervals on each side along x, y and z (a mapping independent of N
+    /// when they scale with N: grids for convergence studies).
+    Intervals([usize; 3]),
+}
+
+/// What the user asks for.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct GridSpec3 {
+    /// Cells per chord N (h = 1/N).
+    pub resolution: usize,
+    /// The plate's thickness (chords).
+    pub thickness: f64,
+    /// The plate's span.
+    pub span: Span,
+    /// Distance from the plate to the outer boundary along x, y, z (chords; z unused when
+    /// periodic).
+    pub extent: [f64; 3],
+    /// How the stretched patches are sized.
+    pub stretch: Stretch3,
+    /// Largest memory the solver may take (bytes, estimated as [`BYTES_PER_CELL`] per cell).
+    pub memory_limit: f64,
+}
+
+/// The solver's memory per cell (bytes): velocities, right-hand sides (two levels), pressure
+/// and the pressure solver's vectors and coefficients, padding included at moderate sizes.
+pub const BYTES_PER_CELL: f64 = 200.0;
+
+impl GridSpec3 {
+    /// The card's grid: thickness 1/16, 10 chords of extent, growth capped at 10 %, 8 GB.
+    pub fn card(resolution: usize, span: Span) -> Self {
+        GridSpec3 {
+            resolution,
+            thickness: 1.0 / 16.0,
+            span,
+            extent: [10.0; 3],
+            stretch: Stretch3::GrowthCap(1.1),
+            memory_limit: 8e9,
+        }
+    }
+
+    /// Checks every input (not the memory: [`Grid3::new`] does, knowing the cells).
+    pub fn validate(&self) -> Result<(), Flow3Error> {
+        let bad = |name, value: f64, range| Flow3Error::BadGrid { name, value, range };
+        let n = self.resolution;
+        if !(2..=1024).contains(&n) {
+            return Err(bad("resolution", n as f64, "2 ..= 1024"));
+        }
+        if !(self.thickness > 0.0 && self.thickness <= 1.0) {
+            return Err(bad("thickness", self.thickness, "0 < t <= 1 chord"));
+        }
+        let b = self.span.length();
+        if !(b > 0.0 && b.is_finite()) {
+            return Err(Flow3Error::SpanNotPositive { span: b });
+        }
+        let h = 1.0 / n as f64;
+        if b < 2.0 * h * (1.0 - 1e-12) {
+            return Err(Flow3Error::SpanTooShort {
+                span: b,
+                resolution: n,
+                min: 2.0 * h,
+            });
+        }
+        if self.extent.iter().any(|&e| !(e > 0.0 && e <= 200.0)) {
+            let e = self.extent.iter().copied().fold(f64::NAN, f64::min);
+            return Err(bad("extent", e, "0 < extent <= 200 chords"));
+        }
+        match self.stretch {
+            Stretch3::GrowthCap(r) if !(1.0..=1.5).contains(&r) => {
+                Err(bad("growth", r, "1 ..= 1.5"))
+            }
+            Stretch3::Intervals(k) if k.contains(&0) => Err(bad("intervals", 0.0, "at least 1")),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// The grid: node coordinates per axis and the plate's cells.
+#[derive(Clone, Debug)]
+pub struct Grid3 {
+    /// What it was built from.
+    pub spec: GridSpec3,
+    /// Cells along x, y, z.
+    pub n: [usize; 3],
+    /// Node coordinates along each axis (n + 1 each, increasing).
+    pub nodes: [Vec<f64>; 3],
+    /// The plate is cells lo[a]..hi[a] along each axis (empty when `plate` is false).
+    pub plate_lo: [usize; 3],
+    /// See `plate_lo`.
+    pub plate_hi: [usize; 3],
+    /// Whether the plate is in the grid (false for verification grids).
+    pub plate: bool,
+    /// Whether z is periodic.
+    pub periodic_z: bool,
+    /// Core spacing h = 1/N.
+    pub h: f64,
+}
+
+impl Grid3 {
+    /// Builds the grid after validating the spec and its memory.
+    pub fn new(spec: &GridSpec3) -> Result<Grid3, Flow3Error> {
+        spec.validate()?;
+        let h = 1.0 / spec.resolution as f64;
+        let half = [0.5, 0.5 * spec.thickness, 0.5 * spec.span.length()];
+        let mut nodes: [Vec<f64>; 3] = Default::default();
+        let (mut lo, mut hi) = ([0; 3], [0; 3]);
+        let periodic = matches!(spec.span, Span::Periodic(_));
+        for a in 0..3 {
+            let core = ((2.0 * half[a] / h).round() as usize).max(1);
+            let sides = if a == 2 && periodic {
+                0
+            } else {
+                match spec.stretch {
+                    Stretch3::GrowthCap(r) if r <= 1.0 => (spec.extent[a] / h).round() as usize,
+                    Stretch3::GrowthCap(r) => intervals_for_growth(h, spec.extent[a], r),
+                    Stretch3::Intervals(k) => k[a],
+                }
+                .max(1)
+            };
+            let uniform = matches!(spec.stretch, Stretch3::GrowthCap(r) if r <= 1.0);
+            let offsets = match (sides, uniform) {
+                (0, _) => vec![0.0],
+                (_, true) => (0..=sides)
+                    .map(|k| spec.extent[a] * k as f64 / sides as f64)
+                    .collect(),
+                (_, false) => stretched_offsets(h, spec.extent[a], sides),
+            };
+            nodes[a] = axis(-half[a], half[a], core, &offsets);
+            (lo[a], hi[a]) = (sides, sides + core);
+        }
+        let n = nodes.clone().map(|v| v.len() - 1);
+        let cells = n[0] * n[1] * n[2];
+        let bytes = cells as f64 * BYTES_PER_CELL;
+        if bytes > spec.memory_limit {
+            return Err(Flow3Error::GridTooLarge {
+                cells,
+                bytes,
+                limit: spec.memory_limit,
+            });
+        }
+        Ok(Grid3 {
+            spec: spec.clone(),
+            n,
+            nodes,
+            plate_lo: lo,
+            plate_hi: hi,
+            plate: true,
+            periodic_z: periodic,
+            h,
+        })
+    }
+
+    /// The same grid with no plate (for verification against exact solutions).
+    pub fn without_plate(mut self) -> Grid3 {
+        self.plate = false;
+        self
+    }
+
+    /// Number of cells.
+    pub fn cells(&self) -> usize {
+        self.n[0] * self.n[1] * self.n[2]
+    }
+
+    /// Whether cell (i, j, k) is inside the plate.
+    #[inline]
+    pub fn solid(&self, c: [usize; 3]) -> bool {
+        self.plate && (0..3).all(|a| c[a] >= self.plate_lo[a] && c[a] < self.plate_hi[a])
+    }
+
+    /// Smallest cell width along each axis.
+    pub fn min_spacing(&self) -> [f64; 3] {
+        self.nodes.clone().map(|v| {
+            v.windows(2)
+                .map(|w| w[1] - w[0])
+                .fold(f64::INFINITY, f64::min)
+        })
+    }
+
+    /// Largest ratio of neighbouring cell widths over the three axes.
+    pub fn max_growth(&self) -> f64 {
+        self.nodes
+            .iter()
+            .flat_map(|v| {
+                v.windows(3)
+                    .map(|w| ((w[2] - w[1]) / (w[1] - w[0])).max((w[1] - w[0]) / (w[2] - w[1])))
+            })
+            .fold(1.0, f64::max)
+    }
+}
+
+/// Nodes of one axis: a uniform core lo..hi of `core` cells and the patch `offsets` (from 0)
+/// beyond each end.
+fn axis(lo: f64, hi: f64, core: usize, offsets: &[f64]) -> Vec<f64> {
+    let step = (hi - lo) / core as f64;
+    let mut v: Vec<f64> = offsets.iter().rev().map(|o| lo - o).collect();
+    v.extend((1..core).map(|k| lo + k as f64 * step));
+    v.push(hi);
+    v.extend(offsets.iter().skip(1).map(|o| hi + o));
+    v
+}

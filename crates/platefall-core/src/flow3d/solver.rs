@@ -1,0 +1,417 @@
+//! [`FlowSolver3`]: the fields on the body-fixed 3-D grid and one step of the mixed-frame
+//! equations (docs/physics.md §9), in the 2-D solver's order: begin_step → predict →
+//! impose_boundaries → project → end_step → update_loads.
+use super::boundary::{Outer, OuterBc3};
+use super::frame::Frame3;
+use super::grid::Grid3;
+use super::layout::Layout;
+use super::loads::{plate_loads, LoadInput, Loads3};
+use super::metrics::Metrics3;
+use super::momentum::{explicit_rhs, RhsContext, RhsStats};
+use super::plate::Plate;
+use super::project::{
+    cell_fluxes, correct, JacobiCg, PoissonOperator, PoissonSolve, SolveStats, Stop,
+};
+use super::error::{Flow3Error, BLOWUP_FACTOR};
+use super::params::FlowParams3;
+use crate::flow::Ab2;
+
+/// The outer boundary's view of the solver's fields (a macro: the borrows stay per field).
+macro_rules! outer {
+    ($s:expr) => {
+        Outer {
+            m: &$s.metrics,
+            layout: &$s.layout,
+            frame: &$s.frame,
+            bc: &$s.outer,
+            periodic_z: $s.grid.periodic_z,
+        }
+    };
+}
+
+/// A body force (x, t) ↦ f added to the momentum equations (manufactured solutions).
+pub type ForceFn3 = Box<dyn Fn([f64; 3], f64) -> [f64; 3] + Send + Sync>;
+
+/// The three-dimensional flow solver.
+pub struct FlowSolver3 {
+    grid: Grid3,
+    params: FlowParams3,
+    metrics: Metrics3,
+    layout: Layout,
+    vel: [Vec<f64>; 3],
+    h: [Vec<f64>; 3],
+    h_old: [Vec<f64>; 3],
+    /// Cell pressures (zero in the plate), index i + nx (j + ny k).
+    p: Vec<f64>,
+    /// The pressure equation's right-hand side and the divergence weights Δt / V.
+    rhs: Vec<f64>,
+    weight: Vec<f64>,
+    pressure: Box<dyn PoissonSolve>,
+    plate: Plate,
+    outer: OuterBc3,
+    forcing: Option<ForceFn3>,
+    frame: Frame3,
+    t: f64,
+    dt_prev: f64,
+    steps: u64,
+    rhs_stats: RhsStats,
+    solve_stats: SolveStats,
+    dt_visc: f64,
+    loads: Loads3,
+}
+
+impl FlowSolver3 {
+    /// A fluid at rest around the plate moving with `frame` at time 0.
+    pub fn new(
+        grid: Grid3,
+        params: FlowParams3,
+        outer: OuterBc3,
+        frame: Frame3,
+    ) -> Result<FlowSolver3, Flow3Error> {
+        params.validate()?;
+        let metrics = Metrics3::new(&grid);
+        let layout = Layout::new(grid.n);
+        let nu = 1.0 / params.re;
+        let op = PoissonOperator::new(&grid, &metrics);
+        let cells = grid.cells();
+        let min = grid.min_spacing();
+        let dt_visc =
+            params.visc_safety / (4.0 * nu * min.iter().map(|d| 1.0 / (d * d)).sum::<f64>());
+        let mut s = FlowSolver3 {
+            plate: Plate::new(&grid, &metrics, &layout, nu),
+            vel: std::array::from_fn(|_| layout.zeros()),
+            h: std::array::from_fn(|_| layout.zeros()),
+            h_old: std::array::from_fn(|_| layout.zeros()),
+            p: vec![0.0; cells],
+            rhs: vec![0.0; cells],
+            weight: vec![0.0; cells],
+            pressure: Box::new(JacobiCg::new(op)),
+            outer,
+            forcing: None,
+            frame,
+            t: 0.0,
+            dt_prev: 0.0,
+            steps: 0,
+            rhs_stats: RhsStats::default(),
+            solve_stats: SolveStats::default(),
+            dt_visc,
+            loads: Loads3::default(),
+            grid,
+            params,
+            metrics,
+            layout,
+        };
+        s.plate.impose(&mut s.vel, &s.metrics, &s.layout, &s.frame);
+        Ok(s)
+    }
+
+    /// Adds a body force to the momentum equations.
+    pub fn set_forcing(&mut self, f: ForceFn3) {
+        self.forcing = Some(f);
+    }
+
+    /// Sets every point of component c to f(x)[c] (ghosts included), then the plate to g. Not
+    /// projected: give a divergence-free field.
+    pub fn set_velocity(&mut self, f: impl Fn([f64; 3]) -> [f64; 3]) {
+        let lay = self.layout;
+        for (c, q) in self.vel.iter_mut().enumerate() {
+            for (idx, v) in q.iter_mut().enumerate() {
+                let p = lay.point(idx);
+                if (0..3).all(|a| p[a] < lay.points(c, a) + super::layout::G as isize) {
+                    *v = f(self.metrics.position(c, p))[c];
+                }
+            }
+        }
+        if self.grid.periodic_z {
+            outer!(self).fill_ghosts(&mut self.vel, self.t);
+        }
+        self.plate
+            .impose(&mut self.vel, &self.metrics, &self.layout, &self.frame);
+    }
+
+    /// One step to t + dt with the body moving as `next` at the new time level.
+    pub fn advance(&mut self, dt: f64, next: Frame3) -> Result<(), Flow3Error> {
+        if !(dt > 0.0 && dt.is_finite()) {
+            return Err(Flow3Error::BadStep { dt });
+        }
+        self.begin_step()?;
+        self.predict(dt);
+        self.impose_boundaries(dt, next);
+        self.project(dt)?;
+        self.end_step(dt);
+        self.update_loads()
+    }
+
+    /// Ghost values and the explicit right-hand side Hⁿ of the state at tⁿ.
+    pub fn begin_step(&mut self) -> Result<(), Flow3Error> {
+        outer!(self).fill_ghosts(&mut self.vel, self.t);
+        let vel = [&self.vel[0][..], &self.vel[1][..], &self.vel[2][..]];
+        let context = RhsContext {
+            m: &self.metrics,
+            layout: &self.layout,
+            frame: &self.frame,
+            nu: 1.0 / self.params.re,
+            periodic_z: self.grid.periodic_z,
+        };
+        let [h0, h1, h2] = &mut self.h;
+        self.rhs_stats = explicit_rhs(vel, context, [h0, h1, h2]);
+        let [h0, h1, h2] = &mut self.h;
+        self.plate.correct_diffusion([h0, h1, h2], vel, &self.frame);
+        if let Some(f) = &self.forcing {
+            add_forcing(
+                f,
+                &self.metrics,
+                &self.layout,
+                self.t,
+                &mut self.h,
+                self.grid.periodic_z,
+            );
+        }
+        let bound = BLOWUP_FACTOR * (1.0 + self.max_grid_speed());
+        let seen = self.rhs_stats.max_speed;
+        if seen.is_nan() || seen > bound || !self.rhs_stats.convective_rate.is_finite() {
+            return Err(self.diverged(format!(
+                "the largest velocity {seen:.3e} exceeds {bound:.1} = {BLOWUP_FACTOR} × (1 + |g|max)"
+            )));
+        }
+        Ok(())
+    }
+
+    /// u* = uⁿ + Δt[(1 + r/2)Hⁿ − (r/2)Hⁿ⁻¹] (variable-step AB2, r = Δt/Δtⁿ⁻¹; Euler on the
+    /// first step). H is zero outside the interior points, so those keep their values.
+    fn predict(&mut self, dt: f64) {
+        let dt_prev = if self.steps == 0 { 0.0 } else { self.dt_prev };
+        let Ab2 {
+            new: c_new,
+            old: c_old,
+        } = Ab2::new(dt, dt_prev);
+        use rayon::prelude::*;
+        for c in 0..3 {
+            let (h, h_old) = (&self.h[c], &self.h_old[c]);
+            self.vel[c]
+                .par_iter_mut()
+                .zip(h.par_iter().zip(h_old.par_iter()))
+                .for_each(|(u, (h, ho))| *u += dt * (c_new * h + c_old * ho));
+        }
+    }
+
+    /// The frame of the new level, no slip on the plate and the outer normals at tⁿ⁺¹.
+    fn impose_boundaries(&mut self, dt: f64, next: Frame3) {
+        self.frame = next;
+        if self.grid.periodic_z {
+            // The w face nz is face 0.
+            let lay = self.layout;
+            let nz = lay.n[2] as isize;
+            for j in 0..lay.n[1] as isize {
+                for i in 0..lay.n[0] as isize {
+                    let v = self.vel[2][lay.at([i, j, 0])];
+                    self.vel[2][lay.at([i, j, nz])] = v;
+                }
+            }
+        }
+        self.plate
+            .impose(&mut self.vel, &self.metrics, &self.layout, &self.frame);
+        outer!(self).set_normals(&mut self.vel, self.t + dt, dt);
+    }
+
+    /// Solves for pⁿ⁺¹ (warm start from pⁿ) and corrects the velocity.
+    fn project(&mut self, dt: f64) -> Result<(), Flow3Error> {
+        let vel = [&self.vel[0][..], &self.vel[1][..], &self.vel[2][..]];
+        let op = self.pressure.operator();
+        cell_fluxes(vel, &self.metrics, &self.layout, op, &mut self.rhs);
+        let (mut sum, mut count) = (0.0, 0usize);
+        for (k, b) in self.rhs.iter_mut().enumerate() {
+            *b *= -1.0 / dt;
+            if op.diag[k] > 0.0 {
+                sum += *b;
+                count += 1;
+            }
+        }
+        let mean = if count > 0 { sum / count as f64 } else { 0.0 };
+        for ((b, w), (&d, &v)) in self
+            .rhs
+            .iter_mut()
+            .zip(self.weight.iter_mut())
+            .zip(op.diag.iter().zip(&op.volume))
+        {
+            let active = d > 0.0;
+            *b = if active { *b - mean } else { 0.0 };
+            *w = if active { dt / v } else { 0.0 };
+        }
+        let stop = Stop {
+            weight: &self.weight,
+            tol: self.params.div_tol,
+            max_iterations: self.params.max_iterations,
+        };
+        self.solve_stats = self.pressure.solve(&self.rhs, &mut self.p, stop);
+        if !self.solve_stats.converged {
+            return Err(Flow3Error::PressureNotConverged {
+                iterations: self.solve_stats.iterations,
+                divergence: self.solve_stats.divergence,
+                tolerance: self.params.div_tol,
+            });
+        }
+        correct(
+            &mut self.vel,
+            &self.metrics,
+            &self.layout,
+            self.pressure.operator(),
+            &self.p,
+            dt,
+        );
+        Ok(())
+    }
+
+    /// Hⁿ becomes the old right-hand side; the clock moves on.
+    fn end_step(&mut self, dt: f64) {
+        std::mem::swap(&mut self.h, &mut self.h_old);
+        self.t += dt;
+        self.dt_prev = dt;
+        self.steps += 1;
+    }
+
+    /// The loads at the new level; an error if they are not finite.
+    fn update_loads(&mut self) -> Result<(), Flow3Error> {
+        self.loads = plate_loads(&LoadInput {
+            grid: &self.grid,
+            m: &self.metrics,
+            layout: &self.layout,
+            vel: [&self.vel[0], &self.vel[1], &self.vel[2]],
+            p: &self.p,
+            frame: &self.frame,
+            nu: 1.0 / self.params.re,
+        });
+        if !self.loads.is_finite() {
+            return Err(self.diverged("the force on the plate is not finite".to_string()));
+        }
+        Ok(())
+    }
+
+    fn diverged(&self, reason: String) -> Flow3Error {
+        Flow3Error::Diverged {
+            t: self.t,
+            step: self.steps,
+            reason,
+        }
+    }
+
+    /// Largest |g| over the domain.
+    fn max_grid_speed(&self) -> f64 {
+        let nodes = &self.grid.nodes;
+        let lo = std::array::from_fn(|a| nodes[a][0]);
+        let hi = std::array::from_fn(|a| nodes[a][nodes[a].len() - 1]);
+        self.frame.max_speed_over(lo, hi)
+    }
+
+    /// The largest stable Δt from the last right-hand side: 1/Δt = rate/CFL + 1/Δt_visc
+    /// (the 2-D solver's harmonic combination).
+    pub fn stable_dt(&self) -> f64 {
+        crate::flow::combined_dt_limit(
+            self.params.cfl,
+            self.rhs_stats.convective_rate,
+            self.dt_visc,
+        )
+    }
+
+    /// Largest |∇·u| over the fluid cells.
+    pub fn max_divergence(&self) -> f64 {
+        let op = self.pressure.operator();
+        let mut worst: f64 = 0.0;
+        let vel = [&self.vel[0][..], &self.vel[1][..], &self.vel[2][..]];
+        let mut div = vec![0.0; op.cells()];
+        cell_fluxes(vel, &self.metrics, &self.layout, op, &mut div);
+        for (d, v) in div.iter().zip(&op.volume) {
+            worst = worst.max((d / v).abs());
+        }
+        worst
+    }
+
+    /// The loads at the current level.
+    pub fn loads(&self) -> Loads3 {
+        self.loads
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &Grid3 {
+        &self.grid
+    }
+
+    /// The metrics (coordinates and stencil coefficients).
+    pub fn metrics(&self) -> &Metrics3 {
+        &self.metrics
+    }
+
+    /// The array layout.
+    pub fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    /// The velocity components (padded arrays, see [`Layout`]).
+    pub fn velocity(&self) -> &[Vec<f64>; 3] {
+        &self.vel
+    }
+
+    /// The right-hand side H of the last `begin_step` (before it is swapped: after `advance`
+    /// it is the old one).
+    pub fn rhs(&self) -> &[Vec<f64>; 3] {
+        &self.h
+    }
+
+    /// The last right-hand side's statistics: (convective rate, largest velocity).
+    pub fn rhs_stats(&self) -> (f64, f64) {
+        (self.rhs_stats.convective_rate, self.rhs_stats.max_speed)
+    }
+
+    /// Cell pressures, index i + nx (j + ny k).
+    pub fn p(&self) -> &[f64] {
+        &self.p
+    }
+
+    /// The last pressure solve.
+    pub fn solve_stats(&self) -> SolveStats {
+        self.solve_stats
+    }
+
+    /// The current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Steps taken.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// The motion at the current level.
+    pub fn frame(&self) -> &Frame3 {
+        &self.frame
+    }
+
+    /// Whether point p of component c is held by the plate.
+    pub fn is_held(&self, c: usize, p: [isize; 3]) -> bool {
+        self.plate.is_held(c, p)
+    }
+}
+
+/// Adds f(x, t) at every interior point to H.
+fn add_forcing(
+    f: &ForceFn3,
+    m: &Metrics3,
+    lay: &Layout,
+    t: f64,
+    h: &mut [Vec<f64>; 3],
+    periodic_z: bool,
+) {
+    for (c, hc) in h.iter_mut().enumerate() {
+        let first = |a: usize| isize::from(a == c && !(a == 2 && periodic_z));
+        let last = |a: usize| lay.n[a] as isize;
+        for k in first(2)..last(2) {
+            for j in first(1)..last(1) {
+                for i in first(0)..last(0) {
+                    let p = [i, j, k];
+                    hc[lay.at(p)] += f(m.position(c, p), t)[c];
+                }
+            }
+        }
+    }
+}
