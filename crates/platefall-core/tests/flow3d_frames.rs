@@ -95,7 +95,9 @@ fn rigid_rotation_with_the_body_is_steady_with_the_centrifugal_pressure() {
         0.5 * (r[0] * r[0] + r[1] * r[1] + r[2] * r[2])
     };
     let cells: Vec<[isize; 3]> = (0..n[2] as isize)
-        .flat_map(|k| (0..n[1] as isize).flat_map(move |j| (0..n[0] as isize).map(move |i| [i, j, k])))
+        .flat_map(|k| {
+            (0..n[1] as isize).flat_map(move |j| (0..n[0] as isize).map(move |i| [i, j, k]))
+        })
         .collect();
     let offset: f64 = cells
         .iter()
@@ -109,7 +111,10 @@ fn rigid_rotation_with_the_body_is_steady_with_the_centrifugal_pressure() {
         .map(|(f, &c)| (s.p()[f] - offset - exact(c)).abs())
         .fold(0.0f64, f64::max);
     println!("largest departure from ½|ω × x|²: {perr:.3e}");
-    assert!(perr <= 1e-8, "pressure departs from ½|ω × x|² by {perr:.3e}");
+    assert!(
+        perr <= 1e-8,
+        "pressure departs from ½|ω × x|² by {perr:.3e}"
+    );
 }
 
 #[test]
@@ -183,7 +188,11 @@ fn a_uniform_body_force_on_fluid_at_rest_gives_the_buoyancy_minus_f_v() {
             "force {c}: {} against {expected}",
             loads.force[c]
         );
-        assert!(loads.moment[c].abs() <= 1e-8, "moment {c}: {}", loads.moment[c]);
+        assert!(
+            loads.moment[c].abs() <= 1e-8,
+            "moment {c}: {}",
+            loads.moment[c]
+        );
     }
     let speed = all_values(&s).fold(0.0f64, |m, v| m.max(v.abs()));
     assert!(speed <= 1e-10, "the fluid moved: {speed:e}");

@@ -24,11 +24,19 @@ fn exact(x: [f64; 3], t: f64) -> ([f64; 3], [[f64; 3]; 3]) {
     let (amp, _) = amplitude(t);
     let [(sx, cx), (sy, cy), (sz, cz)] = std::array::from_fn(|a| (K * x[a] + PHASE[a]).sin_cos());
     let ak = amp * K;
-    let u = [amp * sx * cy * cz, amp * cx * sy * cz, -2.0 * amp * cx * cy * sz];
+    let u = [
+        amp * sx * cy * cz,
+        amp * cx * sy * cz,
+        -2.0 * amp * cx * cy * sz,
+    ];
     let j = [
         [ak * cx * cy * cz, -ak * sx * sy * cz, -ak * sx * cy * sz],
         [-ak * sx * sy * cz, ak * cx * cy * cz, -ak * cx * sy * sz],
-        [2.0 * ak * sx * cy * sz, 2.0 * ak * cx * sy * sz, -2.0 * ak * cx * cy * cz],
+        [
+            2.0 * ak * sx * cy * sz,
+            2.0 * ak * cx * sy * sz,
+            -2.0 * ak * cx * cy * cz,
+        ],
     ];
     (u, j)
 }
@@ -81,7 +89,11 @@ fn run(n: usize, dts: &[f64]) -> FlowSolver3 {
     let frame = *s.frame();
     for &dt in dts {
         s.advance(dt, frame).expect("step");
-        assert!(s.max_divergence() <= 1e-10, "divergence {:.2e}", s.max_divergence());
+        assert!(
+            s.max_divergence() <= 1e-10,
+            "divergence {:.2e}",
+            s.max_divergence()
+        );
     }
     s
 }
@@ -123,7 +135,10 @@ fn second_order_in_space_on_three_grids() {
         let steps = (t_end / (0.1 / n as f64)).round() as usize;
         let s = run(n, &vec![t_end / steps as f64; steps]);
         let e = errors(&s);
-        println!("N = {n}: steps {steps}, max error {:.3e}, rms {:.3e}", e.0, e.1);
+        println!(
+            "N = {n}: steps {steps}, max error {:.3e}, rms {:.3e}",
+            e.0, e.1
+        );
         errs.push(e);
     }
     for w in errs.windows(2) {
@@ -147,7 +162,9 @@ fn second_order_in_time_with_variable_steps() {
         .iter()
         .map(|&pairs| {
             let dt = t_end / (2 * pairs) as f64;
-            let dts: Vec<f64> = (0..2 * pairs).map(|k| if k % 2 == 0 { 0.8 * dt } else { 1.2 * dt }).collect();
+            let dts: Vec<f64> = (0..2 * pairs)
+                .map(|k| if k % 2 == 0 { 0.8 * dt } else { 1.2 * dt })
+                .collect();
             run(8, &dts)
         })
         .collect();

@@ -1,7 +1,7 @@
 //! The 3-D flow step (docs/physics.md §9): divergence after every step, typed errors on bad
 //! input, the same bits on one and two threads.
 use platefall_core::flow3d::{
-    FlowParams3, FlowSolver3, Frame3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
+    FlowParams3, FlowSolver3, Frame3, Grid3, GridSpec3, JacobiCg, OuterBc3, Span, Stretch3,
 };
 
 /// A small plate grid: N cells per chord, a thick plate (1/4) of span 1, 1.5 chords around.
@@ -51,4 +51,36 @@ fn divergence_stays_below_1e_10_after_every_step() {
             );
         }
     }
+}
+
+#[test]
+fn multigrid_and_jacobi_pressure_solvers_give_the_same_flow() {
+    // Both stop on the same divergence tolerance, so the fields agree to about what that
+    // tolerance lets the pressure differ by; the multigrid needs far fewer iterations.
+    let run = |jacobi: bool| {
+        let mut s = solver(8, Span::Finite(1.0));
+        if jacobi {
+            s.set_pressure_solver(|op| Box::new(JacobiCg::new(op)));
+        }
+        let mut iterations = 0;
+        for _ in 0..6 {
+            s.begin_step().expect("rhs");
+            let dt = s.stable_dt().min(0.05);
+            s.advance(dt, tumbling()).expect("step");
+            iterations += s.solve_stats().iterations;
+        }
+        (s, iterations)
+    };
+    let ((mg, it_mg), (jc, it_jc)) = (run(false), run(true));
+    let diff = (0..3)
+        .flat_map(|c| mg.velocity()[c].iter().zip(&jc.velocity()[c]))
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    println!(
+        "multigrid {it_mg} iterations, Jacobi {it_jc}; largest velocity difference {diff:.2e}"
+    );
+    assert!(diff <= 1e-9, "velocities differ by {diff:.3e}");
+    assert!(
+        it_mg * 5 <= it_jc,
+        "multigrid {it_mg} against Jacobi {it_jc} iterations"
+    );
 }

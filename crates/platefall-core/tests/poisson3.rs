@@ -518,7 +518,10 @@ fn analytic_modes_of_the_uniform_grid_are_solved_exactly() {
             .zip(&exact)
             .map(|(a, b)| (a - b).abs())
             .fold(0.0, f64::max);
-        assert!(err <= 1e-9, "{q:?} {kinds:?}: max error {err:e} ({stats:?})");
+        assert!(
+            err <= 1e-9,
+            "{q:?} {kinds:?}: max error {err:e} ({stats:?})"
+        );
     }
 }
 

@@ -63,6 +63,9 @@ pub enum Flow3Error {
         /// What was seen.
         reason: String,
     },
+    /// The pressure solver could not be built for this grid.
+    #[error("the pressure solver could not be built: {0}")]
+    PressureSetup(#[from] crate::poisson3::PoissonError),
     /// The pressure solve did not reach its tolerance.
     #[error("the pressure solve stopped after {iterations} iterations at divergence {divergence:.3e} (tolerance {tolerance:.1e})")]
     PressureNotConverged {

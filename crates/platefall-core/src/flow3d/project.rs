@@ -9,8 +9,8 @@
 //! boundary, where the normal velocity is given, nor across a plate face, where it is g). The
 //! operator is symmetric and positive semi-definite (constants span its null space; the
 //! right-hand side is made orthogonal to them). It is handed to a [`PoissonSolve`] as per-face
-//! coefficients; [`JacobiCg`] (conjugate gradients with a diagonal preconditioner) is the solver
-//! today. The solve stops on the quantity that matters: the largest cell divergence the
+//! coefficients: [`super::MultigridCg`] (conjugate gradients preconditioned by a multigrid
+//! V-cycle) by default, [`JacobiCg`] (a diagonal preconditioner) as a simple reference. The solve stops on the quantity that matters: the largest cell divergence the
 //! correction would leave, |r_P| Δt / V_P.
 use rayon::prelude::*;
 
@@ -31,6 +31,8 @@ pub struct PoissonOperator {
     pub diag: Vec<f64>,
     /// Cell volumes.
     pub volume: Vec<f64>,
+    /// Cell widths along x, y, z (n[a] each).
+    pub widths: [Vec<f64>; 3],
 }
 
 impl PoissonOperator {
@@ -76,6 +78,9 @@ impl PoissonOperator {
             coef,
             diag,
             volume,
+            widths: std::array::from_fn(|a| {
+                (0..n[a] as isize).map(|k| m.axes[a].width(k)).collect()
+            }),
         }
     }
 

@@ -2,18 +2,17 @@
 //! equations (docs/physics.md §9), in the 2-D solver's order: begin_step → predict →
 //! impose_boundaries → project → end_step → update_loads.
 use super::boundary::{Outer, OuterBc3};
+use super::error::{Flow3Error, BLOWUP_FACTOR};
 use super::frame::Frame3;
 use super::grid::Grid3;
 use super::layout::Layout;
 use super::loads::{plate_loads, LoadInput, Loads3};
 use super::metrics::Metrics3;
 use super::momentum::{explicit_rhs, RhsContext, RhsStats};
-use super::plate::Plate;
-use super::project::{
-    cell_fluxes, correct, JacobiCg, PoissonOperator, PoissonSolve, SolveStats, Stop,
-};
-use super::error::{Flow3Error, BLOWUP_FACTOR};
+use super::multigrid::MultigridCg;
 use super::params::FlowParams3;
+use super::plate::Plate;
+use super::project::{cell_fluxes, correct, PoissonOperator, PoissonSolve, SolveStats, Stop};
 use crate::flow::Ab2;
 
 /// The outer boundary's view of the solver's fields (a macro: the borrows stay per field).
@@ -85,7 +84,7 @@ impl FlowSolver3 {
             p: vec![0.0; cells],
             rhs: vec![0.0; cells],
             weight: vec![0.0; cells],
-            pressure: Box::new(JacobiCg::new(op)),
+            pressure: Box::new(MultigridCg::new(op)?),
             outer,
             forcing: None,
             frame,
@@ -103,6 +102,16 @@ impl FlowSolver3 {
         };
         s.plate.impose(&mut s.vel, &s.metrics, &s.layout, &s.frame);
         Ok(s)
+    }
+
+    /// Replaces the pressure solver ([`MultigridCg`] by default) with one built from the same
+    /// operator, e.g. [`super::JacobiCg::new`] as a reference.
+    pub fn set_pressure_solver(
+        &mut self,
+        make: impl FnOnce(PoissonOperator) -> Box<dyn PoissonSolve>,
+    ) {
+        let op = self.pressure.operator().clone();
+        self.pressure = make(op);
     }
 
     /// Adds a body force to the momentum equations.
