@@ -16,6 +16,7 @@
 pub mod cli;
 
 mod bench;
+mod bench3;
 mod exit;
 mod pool;
 mod sweep;

@@ -23,6 +23,7 @@ mod resume_args;
 mod run;
 mod shape_args;
 mod signals;
+mod span_arg;
 mod sweep_args;
 mod sweep_cases;
 
