@@ -32,6 +32,7 @@
 //! - [`plot_range`]: the value ranges the viewer's plots open on ([`PlotRanges`]), chosen from
 //!   the case so that the developed motion fills them and the start-up spike lies outside;
 //!   [`view`]: those and the wake window, the viewer's defaults of a run ([`ViewDefaults`]).
+#![warn(missing_docs)]
 
 pub mod analysis;
 pub mod contour;

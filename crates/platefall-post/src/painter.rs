@@ -86,6 +86,8 @@ fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 }
 
 impl FieldPainter {
+    /// A painter for snapshots of `grid` with the image window, size and observer frame of
+    /// `opts`; computes every interpolation weight once.
     pub fn new(grid: Arc<GridGeometry>, opts: PainterOptions) -> Self {
         let image = ImageGrid::new(opts.window, opts.image_long_side);
         let px_x = image.xs();
@@ -155,6 +157,7 @@ impl FieldPainter {
         &self.grid
     }
 
+    /// The options the painter was made with.
     pub fn options(&self) -> &PainterOptions {
         &self.opts
     }

@@ -144,6 +144,7 @@
 //! - For a bug report (< 20 MB): `--field-every 0.5 --field-res 128` gives 17.7 MB for the default
 //!   free fall (57 snapshots; the 62.6k steps are 16 MB of it). Longer runs: also shorten
 //!   `--t-end` / `--turns`, since the per-step series dominate.
+#![warn(missing_docs)]
 
 pub mod cadence;
 pub mod checkpoint;

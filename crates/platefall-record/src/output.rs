@@ -26,10 +26,12 @@ pub struct OutputError {
     pub label: &'static str,
     /// The final name of the file.
     pub path: PathBuf,
+    /// Why it could not be written, in one line.
     pub reason: String,
 }
 
 impl OutputError {
+    /// The error of the output named by option `label` with final name `path`, for `reason`.
     pub fn new(label: &'static str, path: &Path, reason: impl Into<String>) -> Self {
         OutputError {
             label,
