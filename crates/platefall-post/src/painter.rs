@@ -187,6 +187,9 @@ impl FieldPainter {
 
     /// Paints one snapshot. The snapshot must belong to this painter's grid (see
     /// [`check`](Self::check); wrong sizes panic).
+    ///
+    /// # Panics
+    /// If the snapshot's arrays are shorter than this grid's MAC sizes.
     pub fn paint(&self, snap: &FieldSnapshot) -> PaintedFields {
         self.paint_fields(snap, &SnapshotFields::new(&self.grid, snap))
     }

@@ -167,6 +167,9 @@ impl AxisWeights {
 
 /// Bilinear interpolation of `values` (row-major, x fastest, `ax.n_src × ay.n_src`) at the
 /// output points `ax × ay`. Returns `ax.len() × ay.len()` values, x fastest.
+///
+/// # Panics
+/// If `values.len()` is not `ax.n_src × ay.n_src`.
 pub fn bilinear(values: &[f64], ax: &AxisWeights, ay: &AxisWeights) -> Vec<f64> {
     let nsx = ax.n_src;
     assert_eq!(
@@ -192,6 +195,9 @@ pub fn bilinear(values: &[f64], ax: &AxisWeights, ay: &AxisWeights) -> Vec<f64> 
 /// Bilinear interpolation of `values` (row-major, x fastest, `ax.n_src × ay.n_src`) at scattered
 /// points: point k is at (x from `ax` entry k, y from `ay` entry k), so `ax` and `ay` must have
 /// one entry per point (unlike [`bilinear`], which samples their tensor product).
+///
+/// # Panics
+/// If `values.len()` is not `ax.n_src × ay.n_src`, or `ax` and `ay` differ in length.
 pub fn bilinear_at_points(values: &[f64], ax: &AxisWeights, ay: &AxisWeights) -> Vec<f64> {
     let nsx = ax.n_src;
     assert_eq!(
