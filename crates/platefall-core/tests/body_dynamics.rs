@@ -28,7 +28,11 @@ fn constant_step_weights_match_table_d1() {
     // numbers, each correctly rounded, so their error is a few ulp of the largest |β| ≈ 7
     // (≈ 1e-14); 1e-12 leaves margin for the non-binary spacing h = 0.01 at t = 1.
     for (t0, h) in [(0.0, 1.0), (3.0, 0.125), (1.0, 0.01), (-2.5, 0.3)] {
-        for (k, (num, den)) in TABLE_D1_AB_WEIGHTS.iter().enumerate().map(|(i, r)| (i + 1, r)) {
+        for (k, (num, den)) in TABLE_D1_AB_WEIGHTS
+            .iter()
+            .enumerate()
+            .map(|(i, r)| (i + 1, r))
+        {
             let times: Vec<f64> = (0..k).map(|j| t0 - j as f64 * h).collect();
             let beta = ab_weights(&times, h);
             for j in 0..MAX_ORDER {
