@@ -56,7 +56,7 @@ pub use fields::{
     cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, SnapshotFields,
     StreamFrame,
 };
-pub use painter::{FieldPainter, PaintedFields, PainterOptions};
+pub use painter::{FieldPainter, PaintedFields, PainterOptions, SnapshotMismatch};
 pub use plot_range::PlotRanges;
 pub use resample::{bilinear, bilinear_at_points, AxisWeights, FieldWindow, ImageGrid};
 pub use view::ViewDefaults;

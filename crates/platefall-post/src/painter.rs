@@ -38,6 +38,22 @@ impl Default for PainterOptions {
     }
 }
 
+/// A snapshot array whose length is not the MAC size of the painter's grid.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{array} has {got} values, the {nx} x {ny} grid needs {want}")]
+pub struct SnapshotMismatch {
+    /// The array: "u", "v" or "p".
+    pub array: &'static str,
+    /// Its length.
+    pub got: usize,
+    /// The length the grid needs: (nx+1) ny for u, nx (ny+1) for v, nx ny for p.
+    pub want: usize,
+    /// Cells of the grid along x.
+    pub nx: usize,
+    /// Cells of the grid along y.
+    pub ny: usize,
+}
+
 /// The pictures of one snapshot. Images are row-major, x fastest, row 0 at the bottom of the
 /// window (y = y0); pixels whose centre lies in a solid cell are NaN.
 #[derive(Clone, Debug, Default)]
@@ -167,19 +183,26 @@ impl FieldPainter {
         &self.solid_px
     }
 
-    /// Checks that the snapshot's arrays have this grid's MAC sizes; the reason if not.
-    pub fn check(&self, snap: &FieldSnapshot) -> Result<(), String> {
+    /// Checks that the snapshot's arrays have this grid's MAC sizes.
+    ///
+    /// # Errors
+    /// [`SnapshotMismatch`] for the first of u, v, p with another length.
+    pub fn check(&self, snap: &FieldSnapshot) -> Result<(), SnapshotMismatch> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let expect = [
             ("u", snap.u.len(), (nx + 1) * ny),
             ("v", snap.v.len(), nx * (ny + 1)),
             ("p", snap.p.len(), nx * ny),
         ];
-        for (name, got, want) in expect {
+        for (array, got, want) in expect {
             if got != want {
-                return Err(format!(
-                    "{name} has {got} values, the {nx} x {ny} grid needs {want}"
-                ));
+                return Err(SnapshotMismatch {
+                    array,
+                    got,
+                    want,
+                    nx,
+                    ny,
+                });
             }
         }
         Ok(())

@@ -165,7 +165,7 @@ pub mod viewer;
 pub mod vtk;
 
 pub use cadence::Cadence;
-pub use csv::{check_prefix as check_csv_prefix, CSV_HEADER, CSV_TRAILER};
+pub use csv::{check_prefix as check_csv_prefix, CsvPrefixError, CSV_HEADER, CSV_TRAILER};
 pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use messages::ConnectReport;
 pub use options::{
