@@ -33,14 +33,19 @@ use crate::exit::Exit;
 use command::Command;
 use platefall_record::output::OutputError;
 
+pub use crate::sweep::PlanError;
 pub use command::{parse, Cli};
 
 /// The run a case's argument vector describes (`args` without the program name, e.g.
 /// `["free", "--resolution", "16"]`), parsed and validated exactly as the command line does it:
 /// for reproducing a run in-process (the tests compare its fields with the files a run wrote).
-pub fn case_config(args: &[String]) -> Result<platefall_core::sim::ValidatedConfig, String> {
+///
+/// # Errors
+/// [`PlanError`] (one line, as the command line prints it) when `args` are not a case's command
+/// line or describe no valid run.
+pub fn case_config(args: &[String]) -> Result<platefall_core::sim::ValidatedConfig, PlanError> {
     use crate::sweep::CaseCommands as _;
-    sweep_cases::CommandLineCases.config(args).map_err(|e| e.0)
+    sweep_cases::CommandLineCases.config(args)
 }
 
 /// The program and version that checkpoints record, e.g. "platefall 0.1.0".

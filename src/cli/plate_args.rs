@@ -179,6 +179,7 @@ impl PhysicalArgs {
 /// The builder methods the body options set, for both coupled cases.
 pub trait CoupledBuilder: Sized {
     /// Applies the options of the plate's release, coupling and integrator.
+    #[must_use]
     fn body_options(self, args: &BodyArgs) -> Self;
 }
 

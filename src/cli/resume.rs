@@ -150,7 +150,7 @@ fn resumed_outputs(
                     .flatten();
                 ResumeRefusal::Csv(match hint {
                     Some(p) => format!("{why}; add --csv-from {} (it holds them)", p.display()),
-                    None => why,
+                    None => why.to_string(),
                 })
             })?;
             Some((earlier.clone(), steps))

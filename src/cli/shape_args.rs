@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use platefall_core::config::defaults;
-use platefall_core::shape::{NacaCode, Shape};
+use platefall_core::shape::{NacaCode, NotNaca, Shape};
 
 use super::flags::ArgError;
 
@@ -41,20 +41,32 @@ pub enum ShapeKind {
     Polygon,
 }
 
-fn parse_kind(s: &str) -> Result<ShapeKind, String> {
+/// A `--shape` value that names no section.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ShapeNameError {
+    /// It starts with `naca` but is not a NACA four-digit code.
+    #[error(transparent)]
+    Naca(#[from] NotNaca),
+    /// Any other unknown name.
+    #[error(
+        "`{0}` is not a shape: accepted rect, rounded, ellipse, circle, nacaMPTT (e.g. \
+         naca0012), polygon"
+    )]
+    Unknown(String),
+}
+
+/// The section `--shape` names.
+fn parse_kind(s: &str) -> Result<ShapeKind, ShapeNameError> {
     match s {
         "rect" => Ok(ShapeKind::Rect),
         "rounded" => Ok(ShapeKind::Rounded),
         "ellipse" => Ok(ShapeKind::Ellipse),
         "circle" => Ok(ShapeKind::Circle),
         "polygon" => Ok(ShapeKind::Polygon),
-        other if other.to_ascii_lowercase().starts_with("naca") => NacaCode::parse(other)
-            .map(ShapeKind::Naca)
-            .map_err(|e| e.to_string()),
-        other => Err(format!(
-            "`{other}` is not a shape: accepted rect, rounded, ellipse, circle, nacaMPTT (e.g. \
-             naca0012), polygon"
-        )),
+        other if other.to_ascii_lowercase().starts_with("naca") => {
+            Ok(ShapeKind::Naca(NacaCode::parse(other)?))
+        }
+        other => Err(ShapeNameError::Unknown(other.to_string())),
     }
 }
 

@@ -121,9 +121,20 @@ impl From<ProgressMode> for sweep::ProgressMode {
     }
 }
 
+/// A `platefall sweep` command line that asks for nothing the sweep can do.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum SweepArgsError {
+    /// Neither a plan file nor a subcommand (`collect`, `run-case`).
+    #[error("give a plan file: platefall sweep PLAN.toml")]
+    NoPlan,
+}
+
 impl SweepArgs {
     /// The sweep's request.
-    pub(super) fn request(&self) -> Result<SweepRequest, String> {
+    ///
+    /// # Errors
+    /// [`SweepArgsError::NoPlan`] without a plan file or a subcommand.
+    pub(super) fn request(&self) -> Result<SweepRequest, SweepArgsError> {
         Ok(match &self.action {
             Some(SweepAction::Collect { dir }) => SweepRequest::Collect { dir: dir.clone() },
             Some(SweepAction::RunCase { dir, index }) => SweepRequest::RunCase {
@@ -131,10 +142,7 @@ impl SweepArgs {
                 index: *index,
             },
             None => SweepRequest::Run {
-                plan: self
-                    .plan
-                    .clone()
-                    .ok_or("give a plan file: platefall sweep PLAN.toml")?,
+                plan: self.plan.clone().ok_or(SweepArgsError::NoPlan)?,
                 jobs: self.jobs,
                 dry_run: self.dry_run,
                 output: self.output.clone(),

@@ -41,7 +41,7 @@ mod values;
 
 pub(crate) use commands::main;
 pub(crate) use options::{CaseCommands, OptionInfo};
-pub(crate) use plan_error::PlanError;
+pub use plan_error::PlanError;
 pub(crate) use progress::ProgressMode;
 pub(crate) use request::SweepRequest;
 pub(crate) use slurm::SlurmOverrides;

@@ -3,7 +3,7 @@
 /// A plan that cannot run: one line naming the value and what is accepted (exit 2).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error("{0}")]
-pub(crate) struct PlanError(pub(crate) String);
+pub struct PlanError(pub(crate) String);
 
 /// A [`PlanError`] from a format string.
 macro_rules! plan_err {

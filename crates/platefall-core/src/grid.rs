@@ -74,6 +74,10 @@ impl GridSpec {
     }
 
     /// Checks every input, naming the bad value and the accepted range.
+    ///
+    /// # Errors
+    /// [`InputError::OutOfRange`] for the first value outside its range (resolution, shape, extents,
+    /// growth); [`InputError::Inconsistent`] for stretched intervals that cannot span the extent.
     pub fn validate(&self) -> Result<(), InputError> {
         let n = self.resolution;
         check_whole(Param::Resolution, n, 4, 1024)?;
@@ -218,6 +222,9 @@ pub struct Grid {
 
 impl Grid {
     /// Builds the grid; the input is validated first.
+    ///
+    /// # Errors
+    /// The [`InputError`] of [`GridSpec::validate`] for a bad input.
     pub fn new(spec: &GridSpec) -> Result<Grid, InputError> {
         spec.validate()?;
         let n = spec.resolution;
@@ -287,6 +294,7 @@ impl Grid {
     }
 
     /// The same grid with no plate (for verification against exact solutions).
+    #[must_use]
     pub fn without_plate(mut self) -> Grid {
         self.body = None;
         self

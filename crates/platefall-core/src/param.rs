@@ -261,6 +261,10 @@ impl ShapeError {
 }
 
 /// Checks that `value` is finite and in [lo, hi] (or (lo, hi] when `open_lo`).
+///
+/// # Errors
+/// [`InputError::OutOfRange`] naming `param`, `value` and the accepted range when `value` is not
+/// finite or outside it.
 pub fn check_range(
     param: Param,
     value: f64,
@@ -281,6 +285,9 @@ pub fn check_range(
 }
 
 /// Checks that a whole number lies in lo..=hi.
+///
+/// # Errors
+/// [`InputError::OutOfRange`] naming `param`, `value` and lo..=hi when `value` is outside it.
 pub fn check_whole(param: Param, value: usize, lo: usize, hi: usize) -> Result<(), InputError> {
     if (lo..=hi).contains(&value) {
         Ok(())

@@ -8,8 +8,9 @@ use platefall_core::body::{
 };
 use platefall_core::config::PhysicalPlate;
 
-/// docs/physics.md §6 table, newest first, as (numerators, denominator).
-const SPEC_TABLE: [(&[f64], f64); 6] = [
+/// The dissertation's Table D.I: the equal-step Adams–Bashforth weights of orders 1 to 6, newest
+/// first, as (numerators, denominator) (docs/physics.md §6, "Time integration").
+const TABLE_D1_AB_WEIGHTS: [(&[f64], f64); 6] = [
     (&[1.0], 1.0),
     (&[3.0, -1.0], 2.0),
     (&[23.0, -16.0, 5.0], 12.0),
@@ -22,12 +23,16 @@ const SPEC_TABLE: [(&[f64], f64); 6] = [
 // Coefficients
 
 #[test]
-fn constant_step_weights_match_spec_table() {
+fn constant_step_weights_match_table_d1() {
     // Tolerance 1e-12: the weights are sums of 4 Gauss terms of products of ≤ 5 ratios of O(1)
     // numbers, each correctly rounded, so their error is a few ulp of the largest |β| ≈ 7
     // (≈ 1e-14); 1e-12 leaves margin for the non-binary spacing h = 0.01 at t = 1.
     for (t0, h) in [(0.0, 1.0), (3.0, 0.125), (1.0, 0.01), (-2.5, 0.3)] {
-        for (k, (num, den)) in SPEC_TABLE.iter().enumerate().map(|(i, r)| (i + 1, r)) {
+        for (k, (num, den)) in TABLE_D1_AB_WEIGHTS
+            .iter()
+            .enumerate()
+            .map(|(i, r)| (i + 1, r))
+        {
             let times: Vec<f64> = (0..k).map(|j| t0 - j as f64 * h).collect();
             let beta = ab_weights(&times, h);
             for j in 0..MAX_ORDER {
@@ -60,7 +65,7 @@ fn integrator_applies_weights_newest_first() {
         e0[0] = 1.0;
         let mut y = [0.0; 6];
         ab.step(0.0, &mut y, e0, h);
-        let (num, den) = SPEC_TABLE[k - 1];
+        let (num, den) = TABLE_D1_AB_WEIGHTS[k - 1];
         for j in 0..6 {
             let want = if j < k { num[j] / den } else { 0.0 };
             assert!((y[j] / h - want).abs() < 1e-12, "k={k} j={j}");

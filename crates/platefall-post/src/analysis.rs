@@ -7,7 +7,9 @@ use platefall_core::sim::{RunConfig, StepSample};
 /// A time window [t0, t1] of the run.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct TimeWindow {
+    /// Start of the window (convective time, c/U).
     pub t0: f64,
+    /// End of the window (convective time, c/U).
     pub t1: f64,
 }
 
@@ -156,6 +158,8 @@ pub struct Turns {
     pub completed: Vec<f64>,
 }
 
+/// Counts the turns of θ in `samples` from the release time `t_release` (c/U) on: the net
+/// revolutions and the completion time of every whole turn (see [`Turns`]).
 pub fn count_turns(samples: &[StepSample], t_release: f64) -> Turns {
     let after: Vec<&StepSample> = samples
         .iter()

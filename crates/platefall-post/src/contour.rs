@@ -11,6 +11,9 @@ const NONE: u32 = u32::MAX;
 /// Cells with a NaN corner are skipped. Saddle cells are resolved with the cell-centre average.
 /// Each polyline is a maximal chain of crossing points; lines ending at the grid boundary (or at
 /// a skipped cell) are open, the others are closed loops.
+///
+/// # Panics
+/// If `values.len()` is not `xs.len() × ys.len()`.
 pub fn isolines(values: &[f64], xs: &[f64], ys: &[f64], levels: &[f64]) -> Vec<(usize, Polyline)> {
     assert_eq!(
         values.len(),

@@ -42,8 +42,11 @@ pub const MIN_RATIO: f64 = 1.05;
 /// One level of a study: its representative spacing h, the value and its 95 % half-width.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Level {
+    /// Representative spacing of the level (a grid spacing or time step, in the study's units).
     pub h: f64,
+    /// The quantity's value on this level.
     pub value: f64,
+    /// 95 % half-width of `value` (docs/statistics.md); `None` when it has no interval.
     pub half_width: Option<f64>,
 }
 
@@ -70,6 +73,7 @@ pub enum Status {
 }
 
 impl Status {
+    /// The status in words, as study tables and reports print it (e.g. "monotone convergence").
     pub fn describe(self) -> &'static str {
         match self {
             Status::MonotoneConvergence => "monotone convergence",
@@ -87,25 +91,35 @@ impl Status {
 /// The analysis of three levels (finest first).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Triple {
+    /// How the three levels converge (step 3 of the module docs).
     pub status: Status,
+    /// The spacings h1 < h2 < h3, finest first.
     pub h: [f64; 3],
+    /// The values f1, f2, f3 on those levels.
     pub values: [f64; 3],
+    /// Refinement ratio r21 = h2/h1.
     pub r21: f64,
+    /// Refinement ratio r32 = h3/h2.
     pub r32: f64,
+    /// ε21 = f2 − f1, in the quantity's units.
     pub eps21: f64,
+    /// ε32 = f3 − f2, in the quantity's units.
     pub eps32: f64,
-    /// 95 % half-widths of the differences f2 − f1 and f3 − f2 (null without intervals).
+    /// 95 % half-width of the difference f2 − f1 (null without intervals).
     pub noise21: Option<f64>,
+    /// 95 % half-width of the difference f3 − f2 (null without intervals).
     pub noise32: Option<f64>,
     /// The observed order p (monotone convergence only).
     pub order: Option<f64>,
     /// Richardson's extrapolation f_ext (monotone convergence only).
     pub extrapolated: Option<f64>,
-    /// e_a = |(f1 − f2)/f1| and e_ext = |(f_ext − f1)/f_ext|.
+    /// The approximate relative error e_a = |(f1 − f2)/f1| (monotone convergence only).
     pub rel_error: Option<f64>,
+    /// The extrapolated relative error e_ext = |(f_ext − f1)/f_ext| (monotone convergence only).
     pub rel_error_extrapolated: Option<f64>,
-    /// The fine-grid convergence index, relative (a fraction of f1) and in the quantity's units.
+    /// The fine-grid convergence index GCI_21 as a fraction of f1 (monotone convergence only).
     pub gci_fine: Option<f64>,
+    /// The fine-grid convergence index in the quantity's units, F_s |f1 − f2|/(r21^p − 1).
     pub gci_fine_abs: Option<f64>,
     /// GCI_32 / (r21^p GCI_21): 1 in the asymptotic range.
     pub asymptotic_ratio: Option<f64>,

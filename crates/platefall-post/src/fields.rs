@@ -52,12 +52,18 @@ pub fn face_velocities(grid: &GridGeometry, snap: &FieldSnapshot) -> (Vec<f64>, 
 /// faces ([`face_velocities`]) and the vorticity at the nodes ([`vorticity_at_nodes`]).
 #[derive(Clone, Debug)]
 pub struct SnapshotFields {
+    /// x velocity on the u faces (units of U), (nx+1) × ny, with the plate's rigid motion on
+    /// faces touching it.
     pub u: Vec<f64>,
+    /// y velocity on the v faces (units of U), nx × (ny+1), with the plate's rigid motion on
+    /// faces touching it.
     pub v: Vec<f64>,
+    /// Vorticity ω at the nodes (units of U/c), (nx+1)(ny+1), index `i + (nx+1) j`.
     pub vorticity: Vec<f64>,
 }
 
 impl SnapshotFields {
+    /// The grid quantities of `snap` on `grid` (the grid the snapshot was taken on).
     pub fn new(grid: &GridGeometry, snap: &FieldSnapshot) -> Self {
         let (u, v) = face_velocities(grid, snap);
         let vorticity = vorticity_at_nodes(grid, &u, &v);

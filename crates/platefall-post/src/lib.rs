@@ -32,6 +32,7 @@
 //! - [`plot_range`]: the value ranges the viewer's plots open on ([`PlotRanges`]), chosen from
 //!   the case so that the developed motion fills them and the start-up spike lies outside;
 //!   [`view`]: those and the wake window, the viewer's defaults of a run ([`ViewDefaults`]).
+#![warn(missing_docs)]
 
 pub mod analysis;
 pub mod contour;
@@ -55,7 +56,7 @@ pub use fields::{
     cell_centres, face_velocities, stream_function_at_nodes, vorticity_at_nodes, SnapshotFields,
     StreamFrame,
 };
-pub use painter::{FieldPainter, PaintedFields, PainterOptions};
+pub use painter::{FieldPainter, PaintedFields, PainterOptions, SnapshotMismatch};
 pub use plot_range::PlotRanges;
 pub use resample::{bilinear, bilinear_at_points, AxisWeights, FieldWindow, ImageGrid};
 pub use view::ViewDefaults;

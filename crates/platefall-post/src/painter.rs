@@ -38,6 +38,22 @@ impl Default for PainterOptions {
     }
 }
 
+/// A snapshot array whose length is not the MAC size of the painter's grid.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{array} has {got} values, the {nx} x {ny} grid needs {want}")]
+pub struct SnapshotMismatch {
+    /// The array: "u", "v" or "p".
+    pub array: &'static str,
+    /// Its length.
+    pub got: usize,
+    /// The length the grid needs: (nx+1) ny for u, nx (ny+1) for v, nx ny for p.
+    pub want: usize,
+    /// Cells of the grid along x.
+    pub nx: usize,
+    /// Cells of the grid along y.
+    pub ny: usize,
+}
+
 /// The pictures of one snapshot. Images are row-major, x fastest, row 0 at the bottom of the
 /// window (y = y0); pixels whose centre lies in a solid cell are NaN.
 #[derive(Clone, Debug, Default)]
@@ -86,6 +102,8 @@ fn linspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 }
 
 impl FieldPainter {
+    /// A painter for snapshots of `grid` with the image window, size and observer frame of
+    /// `opts`; computes every interpolation weight once.
     pub fn new(grid: Arc<GridGeometry>, opts: PainterOptions) -> Self {
         let image = ImageGrid::new(opts.window, opts.image_long_side);
         let px_x = image.xs();
@@ -155,6 +173,7 @@ impl FieldPainter {
         &self.grid
     }
 
+    /// The options the painter was made with.
     pub fn options(&self) -> &PainterOptions {
         &self.opts
     }
@@ -164,19 +183,26 @@ impl FieldPainter {
         &self.solid_px
     }
 
-    /// Checks that the snapshot's arrays have this grid's MAC sizes; the reason if not.
-    pub fn check(&self, snap: &FieldSnapshot) -> Result<(), String> {
+    /// Checks that the snapshot's arrays have this grid's MAC sizes.
+    ///
+    /// # Errors
+    /// [`SnapshotMismatch`] for the first of u, v, p with another length.
+    pub fn check(&self, snap: &FieldSnapshot) -> Result<(), SnapshotMismatch> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let expect = [
             ("u", snap.u.len(), (nx + 1) * ny),
             ("v", snap.v.len(), nx * (ny + 1)),
             ("p", snap.p.len(), nx * ny),
         ];
-        for (name, got, want) in expect {
+        for (array, got, want) in expect {
             if got != want {
-                return Err(format!(
-                    "{name} has {got} values, the {nx} x {ny} grid needs {want}"
-                ));
+                return Err(SnapshotMismatch {
+                    array,
+                    got,
+                    want,
+                    nx,
+                    ny,
+                });
             }
         }
         Ok(())
@@ -184,6 +210,9 @@ impl FieldPainter {
 
     /// Paints one snapshot. The snapshot must belong to this painter's grid (see
     /// [`check`](Self::check); wrong sizes panic).
+    ///
+    /// # Panics
+    /// If the snapshot's arrays are shorter than this grid's MAC sizes.
     pub fn paint(&self, snap: &FieldSnapshot) -> PaintedFields {
         self.paint_fields(snap, &SnapshotFields::new(&self.grid, snap))
     }

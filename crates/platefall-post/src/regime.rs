@@ -41,9 +41,13 @@ pub const MIN_CYCLES: usize = 2;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Regime {
+    /// θ stays within ±0.02 rad of its midpoint.
     Steady,
+    /// θ oscillates without a full turn, with regular periods.
     Fluttering,
+    /// Full turns in one sense with regular half-turn durations.
     Tumbling,
+    /// Full turns in both senses, or irregular oscillations or turns.
     Chaotic,
     /// Too few oscillations or turns in the window to tell.
     Undetermined,
@@ -74,6 +78,7 @@ impl Regime {
 /// The classification of a window of motion.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MotionClass {
+    /// What the plate is doing in the window.
     pub regime: Regime,
     /// Fluttering: one full oscillation of θ; turning: one full turn (2π); in c/U.
     pub period: Option<f64>,

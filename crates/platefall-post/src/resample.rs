@@ -8,9 +8,13 @@
 /// A rectangle in body coordinates (chord units): x in \[x0, x1\], y in \[y0, y1\].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FieldWindow {
+    /// Left edge (chords, body x).
     pub x0: f64,
+    /// Right edge (chords, body x).
     pub x1: f64,
+    /// Lower edge (chords, body y).
     pub y0: f64,
+    /// Upper edge (chords, body y).
     pub y1: f64,
 }
 
@@ -27,9 +31,11 @@ impl Default for FieldWindow {
 }
 
 impl FieldWindow {
+    /// Extent along x, x1 − x0 (chords).
     pub fn width(&self) -> f64 {
         self.x1 - self.x0
     }
+    /// Extent along y, y1 − y0 (chords).
     pub fn height(&self) -> f64 {
         self.y1 - self.y0
     }
@@ -47,8 +53,11 @@ impl FieldWindow {
 /// (y = y0), x fastest. Pixel (i, j) covers \[x0 + i dx, x0 + (i+1) dx\] × \[y0 + j dy, y0 + (j+1) dy\].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ImageGrid {
+    /// The rectangle the image covers.
     pub window: FieldWindow,
+    /// Pixels along x.
     pub width: usize,
+    /// Pixels along y.
     pub height: usize,
 }
 
@@ -93,9 +102,11 @@ impl ImageGrid {
             .map(|j| self.window.y0 + (j as f64 + 0.5) * dy)
             .collect()
     }
+    /// Number of pixels, width × height.
     pub fn len(&self) -> usize {
         self.width * self.height
     }
+    /// True when the image has no pixels.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -144,9 +155,11 @@ impl AxisWeights {
         }
     }
 
+    /// Number of output coordinates.
     pub fn len(&self) -> usize {
         self.idx.len()
     }
+    /// True when there are no output coordinates.
     pub fn is_empty(&self) -> bool {
         self.idx.is_empty()
     }
@@ -154,6 +167,9 @@ impl AxisWeights {
 
 /// Bilinear interpolation of `values` (row-major, x fastest, `ax.n_src × ay.n_src`) at the
 /// output points `ax × ay`. Returns `ax.len() × ay.len()` values, x fastest.
+///
+/// # Panics
+/// If `values.len()` is not `ax.n_src × ay.n_src`.
 pub fn bilinear(values: &[f64], ax: &AxisWeights, ay: &AxisWeights) -> Vec<f64> {
     let nsx = ax.n_src;
     assert_eq!(
@@ -179,6 +195,9 @@ pub fn bilinear(values: &[f64], ax: &AxisWeights, ay: &AxisWeights) -> Vec<f64> 
 /// Bilinear interpolation of `values` (row-major, x fastest, `ax.n_src × ay.n_src`) at scattered
 /// points: point k is at (x from `ax` entry k, y from `ay` entry k), so `ax` and `ay` must have
 /// one entry per point (unlike [`bilinear`], which samples their tensor product).
+///
+/// # Panics
+/// If `values.len()` is not `ax.n_src × ay.n_src`, or `ax` and `ay` differ in length.
 pub fn bilinear_at_points(values: &[f64], ax: &AxisWeights, ay: &AxisWeights) -> Vec<f64> {
     let nsx = ax.n_src;
     assert_eq!(

@@ -59,12 +59,25 @@ pub struct Interval {
 #[derive(Clone, Debug, PartialEq)]
 pub enum NoInterval {
     /// Fewer batches than [`MIN_BATCHES`].
-    TooFewBatches { have: usize, need: usize },
+    TooFewBatches {
+        /// Batches the window holds.
+        have: usize,
+        /// Batches needed ([`MIN_BATCHES`]).
+        need: usize,
+    },
     /// The batches are so correlated that fewer than [`MIN_EFFECTIVE`] are independent.
-    Correlated { n_eff: f64 },
+    Correlated {
+        /// The effective number of independent batches, batches / τ.
+        n_eff: f64,
+    },
     /// The series is shorter than [`SERIES_MIN_TAUS`] autocorrelation times (or its
     /// autocorrelation does not decay within it).
-    TooShort { samples: usize, tau: Option<f64> },
+    TooShort {
+        /// Samples in the series.
+        samples: usize,
+        /// The series' integrated autocorrelation time in samples; `None` when it does not decay.
+        tau: Option<f64>,
+    },
     /// A value is not finite.
     NotFinite,
 }
@@ -333,8 +346,11 @@ pub fn batch_interval(batches: &[(f64, f64)]) -> Result<Interval, NoInterval> {
 /// (|slope| > t(0.975; n − 2) × its standard error).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Trend {
+    /// Slope of the least-squares line, per index step.
     pub slope: f64,
+    /// Standard error of the slope.
     pub std_error: f64,
+    /// True when |slope| > t(0.975; n − 2) × `std_error` (docs/statistics.md, "Drift").
     pub significant: bool,
 }
 

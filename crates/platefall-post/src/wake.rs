@@ -129,8 +129,11 @@ impl PathHeading {
 /// lower edge, x fastest); NaN outside the grid and inside the plate.
 #[derive(Clone, Debug, Default)]
 pub struct WakeImages {
+    /// Inertial vorticity ω (units of U/c).
     pub vorticity: Vec<f32>,
+    /// Pressure p of docs/physics.md §3 (units of ρU²).
     pub pressure: Vec<f32>,
+    /// Speed of the flow relative to the observer frame (units of U).
     pub speed: Vec<f32>,
 }
 

@@ -115,22 +115,64 @@ impl CsvWriter {
     }
 }
 
+/// Why an earlier CSV cannot start a resumed run's CSV.
+///
+/// The system's error is part of the message, not a `source`, so that every way of printing the
+/// error shows it once.
+#[derive(Debug, thiserror::Error)]
+pub enum CsvPrefixError {
+    /// The file cannot be opened.
+    #[error("cannot read the earlier CSV {}: {error}", .path.display())]
+    Unreadable {
+        /// The earlier CSV.
+        path: PathBuf,
+        /// The system's error.
+        error: std::io::Error,
+    },
+    /// Its first line is not [`CSV_HEADER`].
+    #[error("{} is not a platefall CSV", .0.display())]
+    NotPlatefall(PathBuf),
+    /// It holds fewer whole data rows than the checkpoint's steps.
+    #[error("the earlier CSV {} holds {whole} whole rows, the checkpoint {rows}", .path.display())]
+    TooFewRows {
+        /// The earlier CSV.
+        path: PathBuf,
+        /// The whole data rows it holds.
+        whole: u64,
+        /// The rows needed (the checkpoint's steps).
+        rows: u64,
+    },
+    /// Data row `row` is another step than `row`.
+    #[error("row {row} of {} is not step {row}", .path.display())]
+    WrongStep {
+        /// The earlier CSV.
+        path: PathBuf,
+        /// The row (1-based).
+        row: u64,
+    },
+}
+
 /// Whether the CSV at `path` can start a resumed run's CSV after `rows` steps: a platefall CSV
-/// whose first `rows` data rows are steps 1 to `rows`; why not, in words.
-pub fn check_prefix(path: &Path, rows: u64) -> Result<(), String> {
+/// whose first `rows` data rows are steps 1 to `rows`.
+///
+/// # Errors
+/// [`CsvPrefixError`] saying why it cannot.
+pub fn check_prefix(path: &Path, rows: u64) -> Result<(), CsvPrefixError> {
     prefix_rows(path, rows).map(|_| ())
 }
 
 /// The first `rows` data rows of the CSV at `path` (after checking its header and that row k
-/// is step k, whole: every column and its line break); why not, in words. A CSV cut short (a
+/// is step k, whole: every column and its line break); why not. A CSV cut short (a
 /// run killed before it renamed its CSV into place leaves one, without a trailer and often with
 /// half a last line) serves as far as its whole rows go.
-fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, String> {
-    let file = std::fs::File::open(path)
-        .map_err(|e| format!("cannot read the earlier CSV {}: {e}", path.display()))?;
+fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, CsvPrefixError> {
+    let file = std::fs::File::open(path).map_err(|error| CsvPrefixError::Unreadable {
+        path: path.to_path_buf(),
+        error,
+    })?;
     let mut reader = std::io::BufReader::new(file);
     if whole_line(&mut reader).as_deref() != Some(CSV_HEADER) {
-        return Err(format!("{} is not a platefall CSV", path.display()));
+        return Err(CsvPrefixError::NotPlatefall(path.to_path_buf()));
     }
     let columns = CSV_HEADER.split(',').count();
     let mut out = Vec::with_capacity(rows as usize);
@@ -138,15 +180,18 @@ fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, String> {
         let line = match whole_line(&mut reader) {
             Some(l) if !l.starts_with('#') && l.split(',').count() == columns => l,
             _ => {
-                return Err(format!(
-                    "the earlier CSV {} holds {} whole rows, the checkpoint {rows}",
-                    path.display(),
-                    k - 1
-                ))
+                return Err(CsvPrefixError::TooFewRows {
+                    path: path.to_path_buf(),
+                    whole: k - 1,
+                    rows,
+                })
             }
         };
         if line.split(',').nth(1) != Some(k.to_string().as_str()) {
-            return Err(format!("row {k} of {} is not step {k}", path.display()));
+            return Err(CsvPrefixError::WrongStep {
+                path: path.to_path_buf(),
+                row: k,
+            });
         }
         out.push(line);
     }
@@ -211,7 +256,7 @@ mod tests {
         for cut in [3, 6, 40, 49] {
             std::fs::write(&path, csv(5, Some(cut))).unwrap();
             assert_eq!(prefix_rows(&path, 4).unwrap().len(), 4, "cut at {cut}");
-            let e = prefix_rows(&path, 5).unwrap_err();
+            let e = prefix_rows(&path, 5).unwrap_err().to_string();
             assert!(
                 e.contains("holds 4 whole rows, the checkpoint 5"),
                 "cut at {cut}: {e}"

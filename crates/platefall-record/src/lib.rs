@@ -144,6 +144,7 @@
 //! - For a bug report (< 20 MB): `--field-every 0.5 --field-res 128` gives 17.7 MB for the default
 //!   free fall (57 snapshots; the 62.6k steps are 16 MB of it). Longer runs: also shorten
 //!   `--t-end` / `--turns`, since the per-step series dominate.
+#![warn(missing_docs)]
 
 pub mod cadence;
 pub mod checkpoint;
@@ -164,7 +165,7 @@ pub mod viewer;
 pub mod vtk;
 
 pub use cadence::Cadence;
-pub use csv::{check_prefix as check_csv_prefix, CSV_HEADER, CSV_TRAILER};
+pub use csv::{check_prefix as check_csv_prefix, CsvPrefixError, CSV_HEADER, CSV_TRAILER};
 pub use logger::{spawn_logger, Logger, LoggerReport};
 pub use messages::ConnectReport;
 pub use options::{

@@ -67,6 +67,7 @@ pub struct LoggerReport {
     pub serve_url: Option<String>,
     /// The page of the --web viewer.
     pub web_url: Option<String>,
+    /// What the --connect / --spawn stream did (messages sent and dropped).
     pub connect: Option<ConnectReport>,
     /// Warnings for the end-of-run report (part of [`LoggerReport::lines`]; problems found when
     /// the sinks were opened were also printed then).

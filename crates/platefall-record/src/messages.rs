@@ -60,6 +60,7 @@ impl RunInfo {
 /// How the run ended, with its summary; sent once, last.
 #[derive(Clone, Debug)]
 pub struct RunOutcome {
+    /// How the run ended (completed, diverged, interrupted …), with the details.
     pub status: RunStatus,
     /// The summary JSON (pretty) as written by `--summary`.
     pub summary_json: String,
@@ -77,6 +78,7 @@ pub enum Message {
     /// Write out the CSV's buffered rows (the steps sent so far), then answer: sent before a
     /// checkpoint, so that a run killed after it leaves a CSV holding the rows up to it.
     Flush(crossbeam_channel::Sender<()>),
+    /// The run is over: record its outcome, finalise every output and stop the logger.
     Finish(RunOutcome),
 }
 
@@ -103,6 +105,7 @@ pub struct ViewerRefusal(pub String);
 /// What a --connect / --spawn stream did.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ConnectReport {
+    /// The viewer's URL the stream was sent to.
     pub url: String,
     /// Messages handed to the gRPC client.
     pub sent: u64,

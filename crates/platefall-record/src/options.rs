@@ -35,7 +35,9 @@ pub enum ProgressMode {
 /// `--serve` settings.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ServeOptions {
+    /// The address the gRPC server (and the web viewer) bind to (`--bind`, 127.0.0.1 by default).
     pub bind: IpAddr,
+    /// The gRPC server's TCP port (`--port`).
     pub port: u16,
     /// As accepted by Rerun: "25%", "2GB", "unlimited".
     pub memory_limit: String,

@@ -26,10 +26,12 @@ pub struct OutputError {
     pub label: &'static str,
     /// The final name of the file.
     pub path: PathBuf,
+    /// Why it could not be written, in one line.
     pub reason: String,
 }
 
 impl OutputError {
+    /// The error of the output named by option `label` with final name `path`, for `reason`.
     pub fn new(label: &'static str, path: &Path, reason: impl Into<String>) -> Self {
         OutputError {
             label,
@@ -157,6 +159,38 @@ impl LinkCheck {
     }
 }
 
+/// Why a pending file could not be finished (its reason in an [`OutputError`]). The system's
+/// errors are part of the message, as the reason has always been one line.
+#[derive(Debug, thiserror::Error)]
+enum Unfinished {
+    /// An earlier write failed; its reason.
+    #[error("{0}")]
+    Earlier(String),
+    /// The file was committed before.
+    #[error("already committed")]
+    Committed,
+    /// Flushing the buffer failed.
+    #[error("write failed: {0}")]
+    Flush(io::Error),
+    /// Syncing the data to disk failed.
+    #[error("sync failed: {0}")]
+    Sync(io::Error),
+    /// The file's size could not be read.
+    #[error("{0}")]
+    Metadata(io::Error),
+    /// The file holds fewer (or more) bytes than were written.
+    #[error("the file holds {size} bytes of the {written} written")]
+    Size {
+        /// Bytes in the file.
+        size: u64,
+        /// Bytes written.
+        written: u64,
+    },
+    /// The temporary file was removed or replaced.
+    #[error("{0}")]
+    Link(LinkLost),
+}
+
 /// An output file being written under its temporary name; see the module docs.
 ///
 /// `Write` calls fail after the first error (which is kept). Dropping it without
@@ -226,7 +260,7 @@ impl PendingFile {
     pub fn commit(mut self) -> Result<(PathBuf, u64), OutputError> {
         let result = self.finish_writing();
         if let Err(reason) = result {
-            return Err(self.fail(reason));
+            return Err(self.fail(reason.to_string()));
         }
         inject::commit_delay();
         std::fs::rename(&self.temp_path, &self.target_path)
@@ -237,25 +271,22 @@ impl PendingFile {
     }
 
     /// Flushes and syncs the data and checks that the file holds every byte written.
-    fn finish_writing(&mut self) -> Result<(), String> {
+    fn finish_writing(&mut self) -> Result<(), Unfinished> {
         if let Some(e) = &self.error {
-            return Err(e.clone());
+            return Err(Unfinished::Earlier(e.clone()));
         }
-        let out = self
-            .out
-            .as_mut()
-            .ok_or_else(|| "already committed".to_string())?;
-        out.flush().map_err(|e| format!("write failed: {e}"))?;
+        let out = self.out.as_mut().ok_or(Unfinished::Committed)?;
+        out.flush().map_err(Unfinished::Flush)?;
         let file = out.get_ref();
-        file.sync_all().map_err(|e| format!("sync failed: {e}"))?;
-        let size = file.metadata().map_err(|e| e.to_string())?.len();
+        file.sync_all().map_err(Unfinished::Sync)?;
+        let size = file.metadata().map_err(Unfinished::Metadata)?.len();
         if size != self.written {
-            return Err(format!(
-                "the file holds {size} bytes of the {} written",
-                self.written
-            ));
+            return Err(Unfinished::Size {
+                size,
+                written: self.written,
+            });
         }
-        self.link.verify().map_err(|e| e.to_string())
+        self.link.verify().map_err(Unfinished::Link)
     }
 }
 

@@ -19,6 +19,7 @@ pub const WEB_AVAILABLE: bool = false;
 pub enum LiveServer {}
 
 impl LiveServer {
+    /// Shuts the server down (never called: there is none).
     pub fn shut_down(self) {
         match self {}
     }
@@ -26,9 +27,13 @@ impl LiveServer {
 
 /// What the viewer side produced (nothing, in this build).
 pub struct ViewerReport {
+    /// The finalised .rrd file and its size in bytes (always None here).
     pub rrd: Option<(PathBuf, u64)>,
+    /// What the --connect / --spawn stream did (always None here).
     pub connect: Option<ConnectReport>,
+    /// The --serve server (always None here).
     pub server: Option<LiveServer>,
+    /// Warnings for the end-of-run report.
     pub notes: Vec<String>,
 }
 
@@ -36,36 +41,54 @@ pub struct ViewerReport {
 pub enum Viewer {}
 
 impl Viewer {
+    /// Fails: this build cannot open a recording stream.
     pub fn open(_opts: &RecordOptions, _info: &RunInfo) -> anyhow::Result<Viewer> {
         anyhow::bail!("this platefall was built without the `viewer` feature")
     }
+    /// Logs one step (unreachable: no `Viewer` exists).
     pub fn step(&mut self, _s: StepSample) -> Result<(), RecordingError> {
         match *self {}
     }
+    /// Paints and logs a snapshot (unreachable).
     pub fn field(&mut self, _f: &FieldSnapshot, _skipped: u64) -> Result<bool, RecordingError> {
         match *self {}
     }
+    /// Sends waiting steps while the logger is idle (unreachable).
     pub fn idle(&mut self) -> Result<(), RecordingError> {
         match *self {}
     }
+    /// The live-stream counters so far (unreachable).
     pub fn connect_report(&self) -> Option<ConnectReport> {
         match *self {}
     }
+    /// The first write error of the .rrd file so far (unreachable).
     pub fn output_error(&self) -> Option<OutputError> {
         match *self {}
     }
+    /// Checks that the .rrd file is still on disk (unreachable).
     pub fn check_outputs(&self) -> Option<OutputError> {
         match *self {}
     }
+    /// Logs the outcome and commits the outputs (unreachable).
     pub fn finish(self, _o: &RunOutcome, _stats: &str, _errors: &mut Vec<String>) -> ViewerReport {
         match self {}
     }
 }
 
+/// Refuses every --serve memory limit: this build has no viewer.
+///
+/// # Errors
+///
+/// Always: [`ViewerRefusal`] "this build has no viewer".
 pub fn check_memory_limit(_limit: &str) -> Result<(), ViewerRefusal> {
     Err(ViewerRefusal("this build has no viewer".into()))
 }
 
+/// Refuses every --connect URL: this build has no viewer.
+///
+/// # Errors
+///
+/// Always: [`ViewerRefusal`] "this build has no viewer".
 pub fn check_proxy_url(_url: &str) -> Result<(), ViewerRefusal> {
     Err(ViewerRefusal("this build has no viewer".into()))
 }

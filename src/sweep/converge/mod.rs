@@ -102,7 +102,7 @@ fn dispatch(request: &ConvergeRequest, commands: &dyn CaseCommands) -> Result<Ex
 fn collect(dir: &Path, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
     let (layout, plan, manifest) = open_prepared(dir, commands)?;
     let refined = match plan.grid.as_slice() {
-        [axis] if plan.zip.is_empty() => Refined::from_name(&axis.name).map_err(Failure::input)?,
+        [axis] if plan.zip.is_empty() => Refined::from_name(&axis.name)?,
         _ => {
             return Err(Failure::input(format!(
                 "{} is a sweep, not a convergence study (one refined option in [grid]): use \

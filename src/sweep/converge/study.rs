@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use crate::sweep::failure::Failure;
+use crate::sweep::plan_error::{plan_err, PlanError};
 use crate::sweep::CaseCommands;
 use platefall_core::sim::CaseKind;
 
@@ -18,14 +19,14 @@ pub(crate) enum Refined {
 }
 
 impl Refined {
-    pub(crate) fn from_name(name: &str) -> Result<Refined, String> {
+    pub(crate) fn from_name(name: &str) -> Result<Refined, PlanError> {
         match name {
             "resolution" => Ok(Refined::Resolution),
             "cc" => Ok(Refined::TimeStep("cc")),
             "cfl" => Ok(Refined::TimeStep("cfl")),
             "dt-max" | "dt_max" => Ok(Refined::TimeStep("dt-max")),
             "extent" => Ok(Refined::Extent),
-            other => Err(format!(
+            other => Err(plan_err!(
                 "--refine {other}: not a refinable option: accepted resolution, cc, cfl, dt-max, \
                  extent"
             )),
@@ -62,16 +63,16 @@ pub(crate) struct Study {
 
 /// `--refine NAME=V1,V2,...`: the option and its values as written (numbers, at least three,
 /// distinct, positive; whole for the resolution).
-fn refine_values(spec: &str) -> Result<(Refined, Vec<String>), String> {
+fn refine_values(spec: &str) -> Result<(Refined, Vec<String>), PlanError> {
     let (name, list) = spec.split_once('=').ok_or_else(|| {
-        format!("--refine {spec}: expected OPTION=V1,V2,V3, e.g. resolution=32,64,128")
+        plan_err!("--refine {spec}: expected OPTION=V1,V2,V3, e.g. resolution=32,64,128")
     })?;
     let refined = Refined::from_name(name.trim())?;
     let values: Vec<String> = list.split(',').map(|v| v.trim().to_string()).collect();
     let mut nums = Vec::new();
     for v in &values {
         let x: f64 = v.parse().map_err(|_| {
-            format!("--refine {name}: {v:?} is not a number: accepted positive numbers")
+            plan_err!("--refine {name}: {v:?} is not a number: accepted positive numbers")
         })?;
         let whole = refined != Refined::Resolution || (x.fract() == 0.0 && x >= 1.0);
         if !(x.is_finite() && x > 0.0 && whole) {
@@ -80,19 +81,19 @@ fn refine_values(spec: &str) -> Result<(Refined, Vec<String>), String> {
             } else {
                 "positive numbers"
             };
-            return Err(format!(
+            return Err(plan_err!(
                 "--refine {name}: {v} is out of range: accepted {what}"
             ));
         }
         if nums.iter().any(|y: &f64| (y - x).abs() <= 1e-12 * x) {
-            return Err(format!(
+            return Err(plan_err!(
                 "--refine {name}: {v} is given twice: the levels must differ"
             ));
         }
         nums.push(x);
     }
     if values.len() < 3 {
-        return Err(format!(
+        return Err(plan_err!(
             "--refine {name}: {} value(s) given: accepted 3 or more (an order needs three levels)",
             values.len()
         ));
@@ -120,14 +121,14 @@ fn fixed_options(
     case: CaseKind,
     argv: &[String],
     commands: &dyn CaseCommands,
-) -> Result<Vec<(String, String)>, String> {
+) -> Result<Vec<(String, String)>, PlanError> {
     let known = commands.options(case);
     let mut out: Vec<(String, String)> = Vec::new();
     let mut k = 0;
     while k < argv.len() {
         let arg = &argv[k];
         let Some(body) = arg.strip_prefix("--") else {
-            return Err(format!(
+            return Err(plan_err!(
                 "{arg:?} is not an option of `{case}`: give the case's options as --name value"
             ));
         };
@@ -137,7 +138,7 @@ fn fixed_options(
         };
         let info = known.iter().find(|o| o.name == name).ok_or_else(|| {
             let names: Vec<&str> = known.iter().map(|o| o.name.as_str()).collect();
-            format!(
+            plan_err!(
                 "`{case}` has no option --{name}: accepted {}",
                 names.join(", ")
             )
@@ -149,14 +150,14 @@ fn fixed_options(
                     k += 1;
                     argv.get(k)
                         .cloned()
-                        .ok_or_else(|| format!("--{name} needs a value"))?
+                        .ok_or_else(|| plan_err!("--{name} needs a value"))?
                 }
             }
         } else {
             match inline.as_deref() {
                 None | Some("true") => "true".into(),
                 Some("false") => "false".into(),
-                Some(v) => return Err(format!("--{name} is a flag: {v:?} is not accepted")),
+                Some(v) => return Err(plan_err!("--{name} is a flag: {v:?} is not accepted")),
             }
         };
         out.push((name, value));
@@ -181,7 +182,7 @@ pub(crate) fn study_of(
     commands: &dyn CaseCommands,
 ) -> Result<Study, Failure> {
     let bad = |m: String| Failure::input(m);
-    let (refined, values) = refine_values(refine).map_err(bad)?;
+    let (refined, values) = refine_values(refine)?;
     if jobs == 0 {
         return Err(bad("--jobs 0 is out of range: accepted 1 or more".into()));
     }
@@ -197,7 +198,7 @@ pub(crate) fn study_of(
             case_names()
         )));
     };
-    let mut fixed = fixed_options(case, rest, commands).map_err(bad)?;
+    let mut fixed = fixed_options(case, rest, commands)?;
     let same = |n: &str| n.replace('_', "-") == refined.name();
     if fixed.iter().any(|(n, _)| same(n)) {
         return Err(bad(format!(
@@ -261,7 +262,7 @@ mod tests {
             ("alpha=1,2,3", "not a refinable option"),
             ("resolution", "expected OPTION="),
         ] {
-            let e = refine_values(spec).unwrap_err();
+            let e = refine_values(spec).unwrap_err().0;
             assert!(e.contains(needle) && !e.contains('\n'), "{spec}: {e}");
         }
     }
@@ -284,6 +285,7 @@ mod tests {
         assert!(
             fixed_options(CaseKind::Free, &["--nope".to_string()], &cases)
                 .unwrap_err()
+                .0
                 .contains("no option --nope")
         );
         assert!(fixed_options(CaseKind::Free, &["0.1".to_string()], &cases).is_err());

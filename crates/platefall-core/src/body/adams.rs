@@ -129,6 +129,9 @@ pub struct AdamsBashforth<const N: usize> {
 
 impl<const N: usize> AdamsBashforth<N> {
     /// A new integrator of the given order (1..=6, docs/physics.md §6 table) with an empty history.
+    ///
+    /// # Errors
+    /// [`AbError::Order`] when `order` is outside 1..=6.
     pub fn new(order: usize, start: AbStart) -> Result<Self, AbError> {
         if !(1..=MAX_ORDER).contains(&order) {
             return Err(AbError::Order(order));
@@ -190,6 +193,10 @@ impl<const N: usize> AdamsBashforth<N> {
     /// Replace the history by `history` (oldest first, times strictly increasing), e.g. with exact
     /// derivatives at earlier times so that start-up error does not pollute a convergence test.
     /// The next `step` must be at a time later than the last primer entry.
+    ///
+    /// # Errors
+    /// [`AbError::PrimeTooLong`] for more than 6 entries, [`AbError::PrimeTimes`] for times not finite
+    /// and strictly increasing; the history is then unchanged.
     pub fn prime(&mut self, history: &[(f64, [f64; N])]) -> Result<(), AbError> {
         if history.len() > MAX_ORDER {
             return Err(AbError::PrimeTooLong(history.len()));
@@ -255,6 +262,10 @@ impl<const N: usize> AdamsBashforth<N> {
 
     /// Puts back a history saved by [`save_history`](Self::save_history) from an integrator of
     /// the same N; the order and start mode stay this integrator's own.
+    ///
+    /// # Errors
+    /// [`AbError::HistoryShape`] when `h` does not fit this integrator (another N or a
+    /// corrupt ring); the integrator is then unchanged.
     pub fn restore_history(&mut self, h: &AbHistory) -> Result<(), AbError> {
         let fits = h.derivs.len() == MAX_ORDER
             && h.derivs.iter().all(|d| d.len() == N)

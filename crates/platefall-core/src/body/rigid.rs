@@ -228,6 +228,9 @@ pub struct RigidBody {
 
 impl RigidBody {
     /// A body with the given properties, freedom, initial state and AB order/start (docs/physics.md §6).
+    ///
+    /// # Errors
+    /// [`AbError::Order`] when `order` is outside 1..=6.
     pub fn new(
         props: PlateProps,
         dof: Dof,
@@ -305,6 +308,9 @@ impl RigidBody {
     }
 
     /// Puts back what [`save`](Self::save) returned (the properties stay this body's own).
+    ///
+    /// # Errors
+    /// [`AbError::HistoryShape`] when the saved history does not fit; the body is then unchanged.
     pub fn restore(&mut self, snap: &BodySnapshot) -> Result<(), AbError> {
         self.ab.restore_history(&snap.history)?;
         self.state = snap.state;

@@ -247,12 +247,18 @@ impl RunBuilder<StaticPlate> {
     }
 
     /// The symmetry-breaking pitch nudge ε of the first convective time (rad).
+    #[must_use]
     pub fn kick(mut self, kick: f64) -> Self {
         self.case.kick = kick;
         self
     }
 
     /// Validates the description into a run.
+    ///
+    /// # Errors
+    /// [`InputError::Conflict`] for a grid option given after `seed_grid`, and any [`InputError`] of
+    /// [`RunConfig::validate`](crate::sim::RunConfig::validate) for a value out of its range or
+    /// inconsistent with the others.
     pub fn build(self) -> Result<ValidatedConfig, InputError> {
         let StaticPlate { alpha, kick } = self.case;
         let case = Case::Static { alpha, kick };
@@ -275,12 +281,18 @@ impl RunBuilder<ForcedRotation> {
     }
 
     /// The spin-up time.
+    #[must_use]
     pub fn spinup(mut self, spinup: f64) -> Self {
         self.case.spinup = spinup;
         self
     }
 
     /// Validates the description into a run.
+    ///
+    /// # Errors
+    /// [`InputError::Conflict`] for a grid option given after `seed_grid`, and any [`InputError`] of
+    /// [`RunConfig::validate`](crate::sim::RunConfig::validate) for a value out of its range or
+    /// inconsistent with the others.
     pub fn build(self) -> Result<ValidatedConfig, InputError> {
         let ForcedRotation { rate, spinup } = self.case;
         let three_turns = spinup + 6.0 * PI / rate.abs().max(1e-3);
@@ -308,18 +320,25 @@ impl RunBuilder<PinnedPlate> {
     }
 
     /// The angle of attack held until release (rad).
+    #[must_use]
     pub fn alpha0(mut self, alpha0: f64) -> Self {
         self.case.alpha0 = alpha0;
         self
     }
 
     /// The translation speed on the reference speed (0: a pin in still fluid).
+    #[must_use]
     pub fn speed(mut self, speed: f64) -> Self {
         self.case.speed = speed;
         self
     }
 
     /// Validates the description into a run.
+    ///
+    /// # Errors
+    /// [`InputError::Conflict`] for a grid option given after `seed_grid`, and any [`InputError`] of
+    /// [`RunConfig::validate`](crate::sim::RunConfig::validate) for a value out of its range or
+    /// inconsistent with the others.
     pub fn build(self) -> Result<ValidatedConfig, InputError> {
         let PinnedPlate {
             alpha0,
@@ -349,30 +368,39 @@ impl RunBuilder<FreeFall> {
 
     /// The launch speed V₀ on the reference speed (0: released from rest) [default: 1, or 0 for
     /// a plate described physically].
+    #[must_use]
     pub fn v0(mut self, v0: f64) -> Self {
         self.case.v0 = Some(v0);
         self
     }
 
     /// The launch flight-path angle γ₀ (rad).
+    #[must_use]
     pub fn gamma0(mut self, gamma0: f64) -> Self {
         self.case.gamma0 = gamma0;
         self
     }
 
     /// The launch angle of attack α₀ (rad); the plate is held at θ = γ₀ + α₀ until release.
+    #[must_use]
     pub fn alpha0(mut self, alpha0: f64) -> Self {
         self.case.attitude = Attitude::Alpha0(alpha0);
         self
     }
 
     /// The pitch angle θ₀ at release (rad), instead of α₀.
+    #[must_use]
     pub fn theta0(mut self, theta0: f64) -> Self {
         self.case.attitude = Attitude::Theta0(theta0);
         self
     }
 
     /// Validates the description into a run.
+    ///
+    /// # Errors
+    /// [`InputError::Conflict`] for a grid option given after `seed_grid`, and any [`InputError`] of
+    /// [`RunConfig::validate`](crate::sim::RunConfig::validate) for a value out of its range or
+    /// inconsistent with the others.
     pub fn build(self) -> Result<ValidatedConfig, InputError> {
         let FreeFall {
             v0,
@@ -405,6 +433,7 @@ macro_rules! coupled_options {
         impl RunBuilder<$case> {
             /// Hold the plate at its launch attitude for this long before release [default: 5,
             /// or 0 when it starts from rest].
+            #[must_use]
             pub fn develop(mut self, develop: f64) -> Self {
                 self.case.body.develop = Some(develop);
                 self
@@ -412,6 +441,7 @@ macro_rules! coupled_options {
 
             /// Stop after this many net turns after release (or at the end time, whichever
             /// comes first) [default: 10 for a free fall, none for a pinned plate].
+            #[must_use]
             pub fn turns(mut self, turns: f64) -> Self {
                 self.case.body.turns = Some(turns);
                 self
@@ -419,30 +449,35 @@ macro_rules! coupled_options {
 
             /// Average the summary over the whole turns from this complete turn after release on,
             /// leaving the earlier ones to the transient [default: 1].
+            #[must_use]
             pub fn average_from_turn(mut self, turn: usize) -> Self {
                 self.case.body.average_from_turn = turn;
                 self
             }
 
             /// Run to the end time whatever the plate's turns.
+            #[must_use]
             pub fn without_turn_limit(mut self) -> Self {
                 self.case.body.turns = None;
                 self
             }
 
             /// How the flow's loads enter the plate's equations [default: strong].
+            #[must_use]
             pub fn coupling(mut self, coupling: Coupling) -> Self {
                 self.case.body.coupling = coupling;
                 self
             }
 
             /// The Adams–Bashforth order of the plate's equations (1..=6) [default: 2].
+            #[must_use]
             pub fn ab_order(mut self, order: usize) -> Self {
                 self.case.body.ab_order = order;
                 self
             }
 
             /// How the Adams–Bashforth history is started at release [default: ramp].
+            #[must_use]
             pub fn ab_start(mut self, start: AbStart) -> Self {
                 self.case.body.ab_start = start;
                 self
@@ -462,6 +497,7 @@ impl<C> RunBuilder<C> {
     }
 
     /// Cells per chord N (h = c/N) [default: 64].
+    #[must_use]
     pub fn resolution(mut self, resolution: usize) -> Self {
         match &mut self.options.grid {
             GridChoice::Modern { resolution: n, .. } => *n = resolution,
@@ -472,6 +508,7 @@ impl<C> RunBuilder<C> {
 
     /// A rectangular section of this thickness t/c, exact at every resolution [default: 1/64, or
     /// a physical plate's own].
+    #[must_use]
     pub fn thickness(mut self, thickness: f64) -> Self {
         match &mut self.options.grid {
             GridChoice::Modern { section, .. } => *section = Some(Section::Thickness(thickness)),
@@ -482,6 +519,7 @@ impl<C> RunBuilder<C> {
 
     /// The plate's section (rectangle, rounded, ellipse, NACA, polygon) [default: a rectangle
     /// 1/64 thick, or of a physical plate's thickness].
+    #[must_use]
     pub fn shape(mut self, shape: Shape) -> Self {
         match &mut self.options.grid {
             GridChoice::Modern { section, .. } => *section = Some(Section::Shape(shape)),
@@ -491,6 +529,7 @@ impl<C> RunBuilder<C> {
     }
 
     /// Distance from the plate to the outer boundary, in chords [default: 15].
+    #[must_use]
     pub fn extent(mut self, extent: f64) -> Self {
         match &mut self.options.grid {
             GridChoice::Modern { extent: e, .. } => *e = extent,
@@ -500,6 +539,7 @@ impl<C> RunBuilder<C> {
     }
 
     /// Cap on the ratio of neighbouring cell sizes in the stretched region [default: 1.045].
+    #[must_use]
     pub fn growth(mut self, growth: f64) -> Self {
         match &mut self.options.grid {
             GridChoice::Modern { growth: g, .. } => *g = growth,
@@ -512,30 +552,35 @@ impl<C> RunBuilder<C> {
     /// intervals over 10 chords), instead of the resolution, section, extent and growth cap
     /// given before it; `build` refuses any of those given after it
     /// ([`InputError::Conflict`]).
+    #[must_use]
     pub fn seed_grid(mut self) -> Self {
         self.options.grid = GridChoice::Seed;
         self
     }
 
     /// The Reynolds number U c/ν [default: 5000, or the plate's].
+    #[must_use]
     pub fn re(mut self, re: f64) -> Self {
         self.options.re = Some(re);
         self
     }
 
     /// The Courant number of the convective time-step limit [default: 0.5].
+    #[must_use]
     pub fn cfl(mut self, cfl: f64) -> Self {
         self.options.cfl = cfl;
         self
     }
 
     /// The time-step ceiling [default: 0.01].
+    #[must_use]
     pub fn dt_max(mut self, dt_max: f64) -> Self {
         self.options.dt_max = dt_max;
         self
     }
 
     /// The dissertation's rotation rule Δt·|θ̇| ≤ C_c [default: 0.005].
+    #[must_use]
     pub fn cc(mut self, cc: f64) -> Self {
         self.options.cc = cc;
         self
@@ -543,12 +588,14 @@ impl<C> RunBuilder<C> {
 
     /// How the grid transport is stepped outside the near field [default: explicit for a static
     /// plate, implicit for a turning one].
+    #[must_use]
     pub fn far_field(mut self, scheme: FarFieldScheme) -> Self {
         self.options.far_field = Some(scheme);
         self
     }
 
     /// Half-width and half-height of the near field (chords) [default: 1, 1].
+    #[must_use]
     pub fn near_field(mut self, near_x: f64, near_y: f64) -> Self {
         self.options.near_x = near_x;
         self.options.near_y = near_y;
@@ -557,6 +604,7 @@ impl<C> RunBuilder<C> {
 
     /// The end time in convective times c/U from the impulsive start [default depends on the
     /// case; see the module docs].
+    #[must_use]
     pub fn t_end(mut self, t_end: f64) -> Self {
         self.options.t_end = Some(t_end);
         self

@@ -74,6 +74,7 @@ impl Fluid {
 
     /// The same fluid with some values replaced (density kg/m³, kinematic viscosity m²/s); the
     /// source then says which were given.
+    #[must_use]
     pub fn overridden(mut self, density: Option<f64>, viscosity: Option<f64>) -> Self {
         let mut given = Vec::new();
         if let Some(d) = density {

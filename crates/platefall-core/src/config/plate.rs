@@ -64,6 +64,9 @@ impl Plate {
     /// A plate described physically ([`Strip`], validated here): m*, I*, g*, m_f* and Re are
     /// derived from it (for the run's section: [`Strip::props_of`]), and the section has its
     /// thickness unless the run gives one.
+    ///
+    /// # Errors
+    /// The [`InputError`] of [`Strip::validate`] for the first bad input.
     pub fn strip(strip: &Strip) -> Result<Plate, InputError> {
         strip.validate()?;
         Ok(Plate {
@@ -76,30 +79,35 @@ impl Plate {
     }
 
     /// The same plate with m* replaced.
+    #[must_use]
     pub fn mass(mut self, mass: f64) -> Plate {
         self.props.mass = mass;
         self
     }
 
     /// The same plate with I* replaced.
+    #[must_use]
     pub fn inertia(mut self, inertia: f64) -> Plate {
         self.props.inertia = inertia;
         self
     }
 
     /// The same plate with g* replaced.
+    #[must_use]
     pub fn gravity(mut self, gravity: f64) -> Plate {
         self.props.gravity = gravity;
         self
     }
 
     /// The same plate with the displaced fluid mass m_f* (buoyancy) replaced.
+    #[must_use]
     pub fn displaced(mut self, displaced: f64) -> Plate {
         self.props.displaced = displaced;
         self
     }
 
     /// The same plate with an applied moment (by ρU²c², counter-clockwise positive).
+    #[must_use]
     pub fn torque(mut self, torque: f64) -> Plate {
         self.props.torque = torque;
         self

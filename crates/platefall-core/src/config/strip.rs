@@ -93,6 +93,11 @@ impl Strip {
     }
 
     /// Checks every input and the derived Reynolds number, naming the input to change.
+    ///
+    /// # Errors
+    /// [`InputError::OutOfRange`] for the first input outside its range;
+    /// [`InputError::Inconsistent`] when the thickness exceeds the width or the derived Reynolds
+    /// number is above the solver's limit.
     pub fn validate(&self) -> Result<(), InputError> {
         check_range(Param::Chord, self.chord * 1e3, 0.0, 1e4, true)?;
         check_range(Param::PlateThickness, self.thickness * 1e3, 0.0, 1e4, true)?;

@@ -62,6 +62,10 @@ pub enum PressureUpdate {
 
 impl Pressure {
     /// Assembles and factors −∇² with the Neumann conditions described above.
+    ///
+    /// # Errors
+    /// [`PressureError::Assembly`] when faer refuses the assembled matrix, and
+    /// [`PressureError::Factor`] when it cannot be ordered or factored (not positive definite).
     pub fn new(grid: &Grid, m: &Metrics, faces: &Faces) -> Result<Self, PressureError> {
         let (nx, ny) = (grid.nx, grid.ny);
         let fluid = faces.fluid.clone();

@@ -35,6 +35,10 @@ impl FlowSolver {
 
     /// Puts back a state saved by [`save_state`](Self::save_state) from a solver of the same
     /// grid and parameters; the next step is then the one the saved solver would have taken.
+    ///
+    /// # Errors
+    /// [`StateMismatch`] naming what does not fit (the field sizes, the implicit far field's sizes or
+    /// its scheme); the implicit far field may then be partly restored, so drop the solver.
     pub fn restore_state(&mut self, s: &FlowState) -> Result<(), StateMismatch> {
         let targets: [&mut Vec<f64>; 7] = [
             &mut self.u.data,

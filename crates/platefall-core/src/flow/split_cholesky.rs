@@ -126,6 +126,10 @@ pub struct SplitCholesky {
 impl SplitCholesky {
     /// Orders and factors `a` (its lower triangle, in the caller's numbering), `part[r]` naming the
     /// block of unknown r. Left and right unknowns must not be coupled.
+    ///
+    /// # Errors
+    /// [`FactorError`] when faer refuses a step (sub-matrix, AMD ordering, symbolic or numeric
+    /// factorisation) or the matrix is not positive definite.
     pub fn new(a: SparseColMatRef<'_, u32, f64>, part: &[Part]) -> Result<Self, FactorError> {
         let n = a.nrows();
         let blocks = [Part::Left, Part::Right, Part::Separator];

@@ -69,6 +69,9 @@ impl Zones {
 
     /// The split lines must not cross the plate (their line solves know no interior wall): the
     /// first offending line, if any.
+    ///
+    /// # Errors
+    /// [`PlateCrossing`] naming the first column or row through the plate that would be split.
     pub fn check_plate(&self, grid: &Grid) -> Result<(), PlateCrossing> {
         if !grid.has_plate() {
             return Ok(());

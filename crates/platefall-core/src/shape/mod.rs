@@ -113,6 +113,10 @@ impl Shape {
     }
 
     /// Checks the shape's numbers, naming the first bad one.
+    ///
+    /// # Errors
+    /// [`ShapeError`] for the first bad number: a thickness outside its range, an edge radius not in
+    /// (0, thickness/2], or a polygon that is not a simple outline.
     pub fn validate(&self) -> Result<(), ShapeError> {
         match self {
             Shape::Rect { thickness } | Shape::Ellipse { thickness } => check_thickness(*thickness),

@@ -33,6 +33,10 @@ pub struct NotNaca(pub String);
 
 impl NacaCode {
     /// Parses "0012", "naca0012" or "NACA 2412".
+    ///
+    /// # Errors
+    /// [`NotNaca`] holding `text` when it is not four digits MPTT (after an optional `naca`), with
+    /// TT ≥ 01 and P ≥ 1 when M > 0.
     pub fn parse(text: &str) -> Result<NacaCode, NotNaca> {
         let bad = || NotNaca(text.to_string());
         let t = text.trim();

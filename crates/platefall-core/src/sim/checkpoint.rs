@@ -30,6 +30,11 @@ impl Simulation {
     /// A run of `config` put back into `saved`; returns it and the steps' history to go on
     /// with ([`Simulation::run_from`]). `config` may differ from the saved run's only in its end
     /// (t_end, turns); the caller checks that.
+    ///
+    /// # Errors
+    /// [`RestoreError::Build`] when the run cannot be built, [`RestoreError::Flow`] or
+    /// [`RestoreError::Body`] when the saved flow or plate does not fit it, and
+    /// [`RestoreError::Motion`] when one has a free body and the other a prescribed motion.
     pub fn restore(
         config: ValidatedConfig,
         saved: SimState,

@@ -5,6 +5,10 @@ use super::motion::Case;
 use crate::param::{InputError, Param};
 
 /// Refuses a development or spin-up that lasts the whole run (ending at `t_end`).
+///
+/// # Errors
+/// [`InputError::Inconsistent`] when the development (pinned, free) or the spin-up (forced) lasts
+/// until `t_end` or beyond.
 pub fn check_phases(case: &Case, t_end: f64) -> Result<(), InputError> {
     let (param, value, what) = match *case {
         Case::Pinned { develop, .. } | Case::Free { develop, .. } => (

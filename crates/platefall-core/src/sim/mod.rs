@@ -103,6 +103,11 @@ pub struct Simulation {
 impl Simulation {
     /// Builds the flow solver (fluid at rest) on the validated description's grid, and the motion
     /// law.
+    ///
+    /// # Errors
+    /// [`SimError::Flow`] when the flow solver cannot be set up (the pressure operator, the implicit
+    /// far field's split lines), [`SimError::Input`] for a coupled case without a plate, and
+    /// [`SimError::Body`] for an Adams–Bashforth order outside 1..=6.
     pub fn new(config: ValidatedConfig) -> Result<Self, SimError> {
         let (config, grid) = config.into_parts();
         let state = config.case.prescribed_state(0.0);
@@ -192,6 +197,11 @@ impl Simulation {
     }
 
     /// One coupled step. Returns the new sample.
+    ///
+    /// # Errors
+    /// [`SimError::StepCollapsed`] when the stable time step falls to round-off of t,
+    /// [`SimError::MotionNotFinite`] when the plate's motion is no longer finite, and
+    /// [`SimError::Flow`] when the flow solution diverges.
     pub fn step(&mut self) -> Result<StepSample, SimError> {
         let limit = self.flow.prepare()?;
         let t = self.flow.t();

@@ -170,6 +170,10 @@ impl RunConfig {
 
     /// Validates every value (the first bad one is reported) and builds the grid: the run
     /// description [`Simulation::new`](super::Simulation::new) takes.
+    ///
+    /// # Errors
+    /// [`InputError`] for the first value out of its range or inconsistent with the others (the
+    /// grid, the flow parameters, the times, the case and the plate), or a grid that cannot be built.
     pub fn validate(self) -> Result<ValidatedConfig, InputError> {
         self.check()?;
         let grid = Grid::new(&self.grid)?;

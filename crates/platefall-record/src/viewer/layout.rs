@@ -22,7 +22,9 @@ pub mod paths {
     pub const REACH: &str = "/world/follow/reach";
     /// The plate pose: Transform3D (X, Y, θ); children are in body coordinates.
     pub const PLATE: &str = "/world/plate";
+    /// The plate's outline and fill in body coordinates (static LineStrips2D).
     pub const OUTLINE: &str = "/world/plate/outline";
+    /// Contours of the stream function relative to the chosen observer frame (LineStrips2D).
     pub const STREAMLINES: &str = "/world/plate/streamlines";
     /// Field images under `PLATE` (the close-up, body axes) and `WAKE` (path frame).
     pub const FIELDS: &[&str] = &["vorticity", "pressure", "speed"];
@@ -35,23 +37,37 @@ pub mod paths {
     pub const WAKE_WINDOW: &str = "/world/wake/window";
     /// The path frame with Y mirrored for the screen (origin of the wake views).
     pub const WAKE_SCREEN: &str = "/world/wake/screen";
+    /// The centre's path, one LineStrips2D child per time segment.
     pub const TRAJECTORY: &str = "/world/trajectory";
+    /// Plate outlines every 0.5 c/U along the path (strobe picture), one child per time segment.
     pub const STROBE: &str = "/world/strobe";
+    /// Parent of the C_L, C_D, C_M series (Scalars every step).
     pub const COEFFICIENTS: &str = "/coefficients";
+    /// Parent of the V, θ̇, γ, α series (Scalars every step; angles in radians).
     pub const MOTION: &str = "/motion";
+    /// Parent of the solver's series.
     pub const SOLVER: &str = "/solver";
+    /// The time step Δt (c/U), every step.
     pub const DT: &str = "/solver/dt";
+    /// Transform3D scale (1, −1): the mirrored frame the α plots are viewed through.
     pub const POLAR_SCREEN: &str = "/polar/screen";
+    /// C_L, C_D, C_M against α, grown over time (LineStrips2D).
     pub const POLAR_COEFFICIENTS: &str = "/polar/coefficients";
+    /// V and θ̇ against α, grown over time (LineStrips2D).
     pub const POLAR_MOTION: &str = "/polar/motion";
+    /// TextDocument: title, version, command line and the configuration JSON.
     pub const CONFIG: &str = "/run/config";
+    /// TextDocument: the outcome, the end-of-run report and the summary JSON.
     pub const SUMMARY: &str = "/run/summary";
+    /// TextLog: started, skipped-snapshot warnings, and how the run ended.
     pub const STATUS: &str = "/run/status";
+    /// Scalars at every field snapshot: the snapshots skipped so far.
     pub const SKIPPED_FIELDS: &str = "/run/skipped_fields";
 }
 
-/// Timeline names.
+/// The step-number timeline.
 pub const TIMELINE_STEP: &str = "step";
+/// The convective-time timeline (a duration: 1 s of playback = 1 c/U).
 pub const TIMELINE_TIME: &str = "time";
 
 /// Field image colour scales: (name, colormap, lower, upper).

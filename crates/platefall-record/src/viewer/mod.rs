@@ -47,9 +47,11 @@ pub const AVAILABLE: bool = true;
 pub struct ViewerReport {
     /// The finalised .rrd file and its size in bytes.
     pub rrd: Option<(PathBuf, u64)>,
+    /// What the --connect / --spawn stream did (None without one).
     pub connect: Option<ConnectReport>,
     /// The --serve server, still up (None if not serving or after an error).
     pub server: Option<LiveServer>,
+    /// Warnings for the end-of-run report.
     pub notes: Vec<String>,
 }
 

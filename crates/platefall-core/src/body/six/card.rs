@@ -62,6 +62,7 @@ impl PhysicalPlate6 {
     }
 
     /// A uniform thin rectangular plate ([`thin_plate_inertia`]) of this chord, span and mass.
+    #[must_use]
     pub fn thin_rectangle(self) -> Self {
         Self {
             inertia: thin_plate_inertia(self.mass, self.chord, self.span),
@@ -82,6 +83,10 @@ impl PhysicalPlate6 {
     /// The non-dimensional body (module docs of [`super`]): m* = m/(ρc³), I* = I/(ρc⁵),
     /// g* = g c/U², no displaced mass (the weight is the apparent weight, as for the 2-D card).
     /// Dividing m* and I*_z by b/c gives the 2-D m/(ρc²b) and I/(ρc⁴b).
+    ///
+    /// # Errors
+    /// [`SixError::Dimension`] for the first of chord, span, density, viscosity and speed that is not
+    /// finite and positive; the errors of [`Plate6::new`] for the scaled mass, inertia and gravity.
     pub fn nondimensional(&self) -> Result<Plate6, SixError> {
         let positive = [
             ("chord", self.chord),

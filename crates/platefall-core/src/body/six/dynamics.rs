@@ -44,6 +44,9 @@ pub enum Constraint6 {
 impl Constraint6 {
     /// Whether `state` is consistent with the constraint: pinned about the span, ω lies along
     /// body z exactly.
+    ///
+    /// # Errors
+    /// [`SixError::PinnedSpin`] when pinned about the span and ω has an x or y component.
     pub fn check(&self, state: &State6) -> Result<(), SixError> {
         let w = state.omega;
         if *self == Constraint6::PinnedSpan && (w.x != 0.0 || w.y != 0.0) {

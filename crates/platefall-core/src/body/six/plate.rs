@@ -23,6 +23,10 @@ pub struct Plate6 {
 impl Plate6 {
     /// A body with mass m* > 0, a symmetric positive-definite inertia tensor I* (body axes, about
     /// the centre), g* ≥ 0 and displaced fluid mass m_f* ≥ 0 (buoyancy m_f* g* upwards).
+    ///
+    /// # Errors
+    /// [`SixError::Mass`], [`SixError::Gravity`], [`SixError::Displaced`] or [`SixError::Inertia`]
+    /// for the first value outside its range.
     pub fn new(
         mass: f64,
         inertia: Matrix3<f64>,
@@ -49,6 +53,9 @@ impl Plate6 {
     }
 
     /// A body whose principal axes are the body axes: I* = diag(I_x, I_y, I_z).
+    ///
+    /// # Errors
+    /// As [`Plate6::new`]: the first of m*, the moments, g* and m_f* outside its range.
     pub fn principal(
         mass: f64,
         moments: [f64; 3],

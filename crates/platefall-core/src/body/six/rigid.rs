@@ -27,6 +27,10 @@ pub struct RigidBody6 {
 impl RigidBody6 {
     /// A body with the given properties, constraint, initial state and Adams–Bashforth order
     /// (1..=6) and start (docs/physics.md §6).
+    ///
+    /// # Errors
+    /// The errors of [`State6::validate`] and [`Constraint6::check`] for `state`, and
+    /// [`SixError::History`] ([`AbError::Order`](crate::body::AbError::Order)) when `order` is outside 1..=6.
     pub fn new(
         plate: Plate6,
         constraint: Constraint6,
@@ -67,6 +71,10 @@ impl RigidBody6 {
 
     /// Change the constraint (release) and forget the history, which belonged to the previous
     /// equations of motion.
+    ///
+    /// # Errors
+    /// [`SixError::PinnedSpin`] when the current state does not satisfy `constraint`; nothing is
+    /// changed then.
     pub fn set_constraint(&mut self, constraint: Constraint6) -> Result<(), SixError> {
         constraint.check(&self.state)?;
         self.constraint = constraint;
@@ -77,6 +85,10 @@ impl RigidBody6 {
 
     /// Set the state (a prescribed motion's, or a new start); the history is kept, so for a
     /// free body this is the caller's restart.
+    ///
+    /// # Errors
+    /// The errors of [`State6::validate`] and [`Constraint6::check`] for `state`; nothing is
+    /// changed then.
     pub fn impose(&mut self, state: State6) -> Result<(), SixError> {
         state.validate()?;
         self.constraint.check(&state)?;
@@ -155,6 +167,11 @@ impl RigidBody6 {
     /// Puts back what [`save`](Self::save) returned, bit for bit (the properties, the order and
     /// the start mode stay this body's own); a snapshot that does not fit is refused and the body
     /// left as it was.
+    ///
+    /// # Errors
+    /// The errors of [`State6::validate`] and [`Constraint6::check`] for the saved state,
+    /// [`SixError::SpinHistory`] or [`SixError::Orientation`] for an orientation history that does not
+    /// fit, and [`SixError::History`] for a derivative history that does not.
     pub fn restore(&mut self, snap: &Snapshot6) -> Result<(), SixError> {
         snap.state.validate()?;
         snap.constraint.check(&snap.state)?;

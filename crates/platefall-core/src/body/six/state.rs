@@ -85,6 +85,10 @@ impl State6 {
     }
 
     /// The state's components are finite and the orientation of unit norm (within 1e-12).
+    ///
+    /// # Errors
+    /// [`SixError::NotFinite`] naming the first non-finite part, or [`SixError::Orientation`] when
+    /// the quaternion's norm is off 1 by more than 1e-12.
     pub fn validate(&self) -> Result<(), SixError> {
         let finite = |v: &Vector3<f64>| v.iter().all(|x| x.is_finite());
         if !finite(&self.position) {

@@ -35,6 +35,9 @@ impl StrongCoupling6 {
     /// The coupling for `plate` with the flow's K (rows and columns ordered u, v, w, ω_x, ω_y,
     /// ω_z in body axes, row-major); the typed error when diag(m, m, m) ⊕ I − K is not positive
     /// definite or not finite.
+    ///
+    /// # Errors
+    /// [`SixError::AddedMass`] when diag(m, m, m) ⊕ I − K is not finite or not positive definite.
     pub fn new(plate: &Plate6, k: [[f64; 6]; 6]) -> Result<Self, SixError> {
         let k = Matrix6::from_fn(|r, c| k[r][c]);
         let mut rigid = Matrix6::zeros();
