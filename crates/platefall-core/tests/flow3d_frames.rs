@@ -181,8 +181,8 @@ fn a_uniform_body_force_on_fluid_at_rest_gives_the_buoyancy_minus_f_v() {
     let loads = s.loads();
     let v = t * b;
     println!("loads {loads:?}, expected force {:?}", f.map(|fc| -fc * v));
-    for c in 0..3 {
-        let expected = -f[c] * v;
+    for (c, fc) in f.iter().enumerate() {
+        let expected = -fc * v;
         assert!(
             (loads.force[c] - expected).abs() <= 1e-8,
             "force {c}: {} against {expected}",

@@ -52,7 +52,7 @@ impl Frame3 {
         self.w
     }
 
-    /// Component c of g = Rᵀ Ẋ₀ + ω × x at x (it does not depend on x[c]).
+    /// Component c of g = Rᵀ Ẋ₀ + ω × x at x (it does not depend on `x[c]`).
     #[inline(always)]
     pub fn g(&self, c: usize, x: [f64; 3]) -> f64 {
         let (e1, e2) = ((c + 1) % 3, (c + 2) % 3);

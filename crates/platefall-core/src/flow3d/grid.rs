@@ -120,7 +120,7 @@ pub struct Grid3 {
     pub n: [usize; 3],
     /// Node coordinates along each axis (n + 1 each, increasing).
     pub nodes: [Vec<f64>; 3],
-    /// The plate is cells lo[a]..hi[a] along each axis (empty when `plate` is false).
+    /// The plate is cells `lo[a]..hi[a]` along each axis (empty when `plate` is false).
     pub plate_lo: [usize; 3],
     /// See `plate_lo`.
     pub plate_hi: [usize; 3],

@@ -53,7 +53,7 @@ impl Layout {
         ]
     }
 
-    /// Points of component `c` along axis `a`: 0..=n[a] on its own axis, 0..n[a] on the others.
+    /// Points of component `c` along axis `a`: `0..=n[a]` on its own axis, `0..n[a]` on the others.
     #[inline]
     pub fn points(&self, c: usize, a: usize) -> isize {
         (self.n[a] + usize::from(c == a)) as isize

@@ -121,15 +121,15 @@ fn face_load(
         let mean = 0.5 * (q[at] + q[at + inp.layout.stride[t]]);
         df[t] = inp.nu * (mean - inp.frame.g(t, x)) / d1 * area;
     }
-    for c in 0..3 {
-        out.force[c] += df[c];
+    for (f, d) in out.force.iter_mut().zip(df) {
+        *f += d;
     }
     let mom = [
         x[1] * df[2] - x[2] * df[1],
         x[2] * df[0] - x[0] * df[2],
         x[0] * df[1] - x[1] * df[0],
     ];
-    for c in 0..3 {
-        out.moment[c] += mom[c];
+    for (m, d) in out.moment.iter_mut().zip(mom) {
+        *m += d;
     }
 }

@@ -31,7 +31,7 @@ pub struct PoissonOperator {
     pub diag: Vec<f64>,
     /// Cell volumes.
     pub volume: Vec<f64>,
-    /// Cell widths along x, y, z (n[a] each).
+    /// Cell widths along x, y, z (`n[a]` each).
     pub widths: [Vec<f64>; 3],
 }
 
@@ -253,13 +253,14 @@ impl PoissonSolve for JacobiCg {
             while stats.iterations < stop.max_iterations {
                 self.op.apply(&self.d, &mut self.q);
                 let dq = Self::dot(&mut self.partial, plane, &self.d, &self.q);
-                if !(dq > 0.0) {
+                // Not positive (or NaN): the search direction is exhausted.
+                if dq.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                     break;
                 }
                 let alpha = rz / dq;
                 let mut worst: f64 = 0.0;
-                for k in 0..p.len() {
-                    p[k] += alpha * self.d[k];
+                for (k, pk) in p.iter_mut().enumerate() {
+                    *pk += alpha * self.d[k];
                     self.r[k] -= alpha * self.q[k];
                     worst = worst.max(self.r[k].abs() * stop.weight[k]);
                 }
@@ -355,10 +356,8 @@ pub fn correct(
                         }
                         lo[a] = n[a] as isize - 1;
                     }
-                    if f[a] == n[a] as isize {
-                        if !periodic {
-                            continue;
-                        }
+                    if f[a] == n[a] as isize && !periodic {
+                        continue;
                     }
                     let mut hi = f;
                     hi[a] %= n[a] as isize;

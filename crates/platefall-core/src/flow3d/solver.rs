@@ -119,7 +119,7 @@ impl FlowSolver3 {
         self.forcing = Some(f);
     }
 
-    /// Sets every point of component c to f(x)[c] (ghosts included), then the plate to g. Not
+    /// Sets every point of component c to `f(x)[c]` (ghosts included), then the plate to g. Not
     /// projected: give a divergence-free field.
     pub fn set_velocity(&mut self, f: impl Fn([f64; 3]) -> [f64; 3]) {
         let lay = self.layout;

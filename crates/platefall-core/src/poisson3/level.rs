@@ -178,7 +178,7 @@ impl Level {
                 let at = nx * (j + ny * k);
                 let (d, xr, br) = (&self.diag[at..][..nx], &x[at..][..nx], &b[at..][..nx]);
                 for i in 0..nx {
-                    row[i] = br[i] - d[i] * xr[i] + row[i];
+                    row[i] += br[i] - d[i] * xr[i];
                 }
             }
         });

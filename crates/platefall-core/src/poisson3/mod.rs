@@ -238,7 +238,8 @@ impl Poisson3 {
         for iterations in 1..=MAX_ITERATIONS {
             self.levels[0].apply(&self.p, &mut self.q);
             let curvature = self.planes.dot(&self.p, &self.q);
-            if !(curvature > 0.0) {
+            // Not positive (or NaN): the operator or preconditioner is not definite here.
+            if curvature.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 return Err(PoissonError::Breakdown {
                     iterations,
                     curvature,

@@ -70,7 +70,7 @@ impl Pieces {
         }
         let mut number = vec![NONE; level.cells()];
         let (mut id, mut size) = (vec![NONE; level.cells()], Vec::new());
-        for p in 0..level.cells() {
+        for (p, id_p) in id.iter_mut().enumerate() {
             let r = find(&mut root, p as u32) as usize;
             if grounded[r] {
                 continue;
@@ -79,7 +79,7 @@ impl Pieces {
                 number[r] = size.len() as u32;
                 size.push(0.0);
             }
-            id[p] = number[r];
+            *id_p = number[r];
             size[number[r] as usize] += 1.0;
         }
         Pieces { id, size }
