@@ -54,7 +54,7 @@ const COARSEST_MAX: usize = 256;
 const MAX_ITERATIONS: usize = 500;
 /// Gauss–Seidel sweeps (one red and one black half-sweep each) before and after the coarse
 /// correction.
-const SWEEPS: usize = 1;
+const SWEEPS: usize = 2;
 
 /// Scratch of one level that has a coarser one: its residual and the smoother's second buffer,
 /// and the coarser level's right-hand side and correction.
