@@ -10,6 +10,7 @@
 //! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
 mod args;
 mod bench_args;
+mod branch;
 mod checkpointer;
 mod command;
 mod config;

@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
 
+use super::branch;
 use super::checkpointer::Checkpointer;
 use super::command::{parse, Command};
 use super::config::run_config;
@@ -54,7 +55,10 @@ pub enum ResumeRefusal {
 /// Runs `platefall resume`.
 pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let given_every = args.checkpoint.given_every()?;
-    let ckpt = read_checkpoint(&args.file, &version())?;
+    let mut ckpt = read_checkpoint(&args.file, &version())?;
+    if let Some(d) = args.perturb_omega {
+        branch::perturb_omega(&mut ckpt.sim, d)?;
+    }
     let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
         file: args.file.clone(),
         why: e.kind().to_string(),
@@ -68,6 +72,9 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let config = resumed_config(&cmd.command, &ckpt, args)?;
     let mut info = ckpt.resume.clone();
     (info.t_end, info.turns) = (config.time.t_end, config.time.turns);
+    if let Some(turn) = args.average_from_turn {
+        branch::set_average_from_turn(&mut info, turn)?;
+    }
     let opts = resumed_outputs(record, &mut info, &ckpt, args, config.case.kind())?;
     let every = given_every.or(info.every);
     info.every = every;
@@ -110,6 +117,7 @@ fn resumed_config(
     let mut c = config.config().clone();
     c.time.t_end = args.t_end.unwrap_or(ckpt.resume.t_end);
     c.time.turns = args.turns.or(ckpt.resume.turns);
+    c.time.average_from_turn = args.average_from_turn.unwrap_or(c.time.average_from_turn);
     Ok(c.validate().map_err(super::flags::ArgError::from)?)
 }
 
@@ -132,6 +140,7 @@ fn resumed_outputs(
     };
     r.no_save = args.no_save || r.save.is_none();
     r.quiet |= args.quiet;
+    r.progress = args.progress.unwrap_or(r.progress);
     let summary = args.summary.clone().or(info.summary.clone());
     let ckpt_path = args.checkpoint_out();
     let others: Vec<(&'static str, &Path)> = summary
