@@ -1,7 +1,9 @@
 //! An ensemble member's branch from a checkpoint: `platefall resume --perturb-omega D`. A zero
 //! perturbation is the plain resume byte for byte; a small one changes θ̇ from the branch on by
-//! about D and leaves the rows before the branch as they were; a perturbation that is not a
-//! number, or one of a static run, is refused with one line and exit code 2.
+//! about D and leaves the rows before the branch as they were; a branch writes only the outputs
+//! it names. A perturbation that is not a number, one from a checkpoint before the plate's
+//! release, one of a static run and one that would write over the checkpoint it branches from
+//! are refused with one line and exit code 2.
 mod checkpoint_common;
 
 use std::path::Path;
@@ -84,6 +86,12 @@ fn a_branch_is_the_resume_plus_its_perturbation() {
     let d = up[k].1 - plain[k].1;
     assert!(d > 1e-4 && d < 2e-3, "θ̇ after the branch differs by {d}");
     assert!(plain.last() != up.last());
+    // A branch that names no CSV or summary writes none: the stopped run's stay as they were.
+    let (csv, json) = (read(&dir, "cut.csv"), read(&dir, "cut.json"));
+    let args = ["resume", "branch.ckpt", "-q", "--no-save", "--perturb-omega", "1e-3"];
+    expect_code(&run(&dir, &[&args[..], &["--checkpoint", "alone.ckpt"]].concat()), 0);
+    assert!(read(&dir, "cut.csv") == csv && read(&dir, "cut.json") == json);
+    assert!(dir.join("alone.ckpt").exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -107,5 +115,36 @@ fn bad_branches_are_refused_in_one_line() {
         assert!(lines[0].contains("accepted a finite number"), "{err}");
     }
     assert!(!dir.join("bad.csv").exists());
+    // Without --checkpoint the branch would write over the checkpoint it branches from.
+    let before = read(&dir, "branch.ckpt");
+    let args = ["resume", "branch.ckpt", "-q", "--no-save", "--perturb-omega", "1e-3"];
+    let out = run(&dir, &args);
+    expect_code(&out, 2);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.trim().lines().count() == 1 && err.contains("give it its own --checkpoint"),
+        "{err}"
+    );
+    assert!(read(&dir, "branch.ckpt") == before);
+    // 20 steps (t = 0.2) is before the release at t = 1: the hold would undo the perturbation.
+    stopped(&dir, 20);
+    let out = branch(&dir, "held", &["--perturb-omega", "1e-3"]);
+    expect_code(&out, 2);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.trim().lines().count() == 1 && err.contains("before the plate's release"),
+        "{err}"
+    );
+    assert!(!dir.join("held.csv").exists());
+    // A static plate moves as prescribed: it has no θ̇ of its own.
+    let args = ["static", "--resolution", "16", "--t-end", "0.2", "--no-save"];
+    expect_code(&run(&dir, &[&args[..], &["--checkpoint", "branch.ckpt"]].concat()), 0);
+    let out = branch(&dir, "static", &["--perturb-omega", "1e-3", "--t-end", "0.4"]);
+    expect_code(&out, 2);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.trim().lines().count() == 1 && err.contains("moves as prescribed"),
+        "{err}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1,8 +1,13 @@
 //! An ensemble member's branch from a spun-up run's checkpoint: `platefall resume
 //! --perturb-omega D --average-from-turn K`. The perturbation adds D (rad per c/U) to the
 //! plate's angular velocity θ̇ in the restored state (the plate's own and its integrator's
-//! snapshot) before the first step; the flow is left as it is. The averaging start is written
-//! into the member's command line, so that its own checkpoints resume with it.
+//! snapshot) before the first step; the flow is left as it is. A checkpoint from before the
+//! release is refused (the hold would undo the perturbation). The averaging start is written
+//! into the member's command line, so that its own checkpoints resume with it. A branch writes
+//! only the outputs it names, and must name its own checkpoint: the spun-up run's files stay
+//! as they are for the next member.
+use std::path::Path;
+
 use super::command::parse;
 use super::config::run_config;
 use platefall_core::sim::SimState;
@@ -17,6 +22,14 @@ pub enum BranchRefusal {
     /// A prescribed motion has no θ̇ of its own to perturb.
     #[error("--perturb-omega: the checkpoint's plate moves as prescribed (a static or forced run): accepted only for pinned and free runs")]
     Prescribed,
+    /// The plate is still held at its initial attitude: the prescribed hold would overwrite
+    /// the perturbation at the next step.
+    #[error("--perturb-omega: the checkpoint is before the plate's release (it is still held): accepted a checkpoint after the release")]
+    NotReleased,
+    /// The branch would write its checkpoints over the one it branches from (the next member
+    /// would branch from this one's end).
+    #[error("--perturb-omega: the branch would overwrite {}: give it its own --checkpoint FILE", .0.display())]
+    SameCheckpoint(std::path::PathBuf),
     /// The run's case takes no averaging start.
     #[error("--average-from-turn: the checkpoint's case takes no --average-from-turn (accepted for pinned and free runs)")]
     NoTurns,
@@ -27,11 +40,26 @@ pub fn perturb_omega(sim: &mut SimState, d: f64) -> Result<(), BranchRefusal> {
     if !d.is_finite() {
         return Err(BranchRefusal::NotFinite(d));
     }
-    let Some((body, _)) = sim.body.as_mut() else {
+    let Some((body, released)) = sim.body.as_mut() else {
         return Err(BranchRefusal::Prescribed);
     };
+    if !*released {
+        return Err(BranchRefusal::NotReleased);
+    }
     body.state.omega += d;
     sim.state.omega += d;
+    Ok(())
+}
+
+/// Checks that a branch from `from` writes its checkpoints to another file, `to`.
+pub fn own_checkpoint(from: &Path, to: &Path) -> Result<(), BranchRefusal> {
+    let same = match (from.canonicalize(), to.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => from == to,
+    };
+    if same {
+        return Err(BranchRefusal::SameCheckpoint(from.to_path_buf()));
+    }
     Ok(())
 }
 

@@ -57,6 +57,7 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let given_every = args.checkpoint.given_every()?;
     let mut ckpt = read_checkpoint(&args.file, &version())?;
     if let Some(d) = args.perturb_omega {
+        branch::own_checkpoint(&args.file, &args.checkpoint_out())?;
         branch::perturb_omega(&mut ckpt.sim, d)?;
     }
     let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
@@ -122,7 +123,8 @@ fn resumed_config(
 }
 
 /// The resumed run's outputs: the run's own (the CSV rewritten with its earlier rows, a
-/// continuation recording), or those given; `info` takes them for the next checkpoint.
+/// continuation recording), or those given (a branch: only those given); `info` takes them
+/// for the next checkpoint.
 fn resumed_outputs(
     record: &RecordArgs,
     info: &mut ResumeInfo,
@@ -132,16 +134,19 @@ fn resumed_outputs(
 ) -> anyhow::Result<RecordOptions> {
     let steps = ckpt.sim.flow.steps;
     let mut r = record.clone();
-    r.csv = args.csv.clone().or(info.csv.clone());
-    r.save = match (&args.save, &info.save) {
+    // A branch (an ensemble member) writes only the outputs it names (branch.rs).
+    let branch = args.perturb_omega.is_some();
+    let run_own = |p: &Option<PathBuf>| p.clone().filter(|_| !branch);
+    r.csv = args.csv.clone().or(run_own(&info.csv));
+    r.save = match (&args.save, run_own(&info.save)) {
         (Some(p), _) => Some(p.clone()),
-        (None, Some(p)) => Some(continuation(p, steps)),
+        (None, Some(p)) => Some(continuation(&p, steps)),
         (None, None) => None,
     };
     r.no_save = args.no_save || r.save.is_none();
     r.quiet |= args.quiet;
     r.progress = args.progress.unwrap_or(r.progress);
-    let summary = args.summary.clone().or(info.summary.clone());
+    let summary = args.summary.clone().or(run_own(&info.summary));
     let ckpt_path = args.checkpoint_out();
     let others: Vec<(&'static str, &Path)> = summary
         .iter()
@@ -169,6 +174,9 @@ fn resumed_outputs(
     };
     opts.recording_id = info.recording_id.clone();
     let abs = |p: &Option<PathBuf>| p.as_deref().map(std::path::absolute).transpose();
+    if branch {
+        info.save = abs(&args.save).context("the recording's path")?;
+    }
     info.csv = abs(&opts.csv).context("the CSV's path")?;
     info.summary = abs(&summary).context("the summary's path")?;
     Ok(opts)
