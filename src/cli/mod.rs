@@ -5,7 +5,7 @@
 //!
 //! Files, each using only those after it: `command` (the grammar), `config` (a case's run),
 //! `run` (running it), `sweep_args` and `sweep_cases` (the sweep's options and what it needs to
-//! know of the case subcommands), `converge_args` (a refinement study's options), `bench_args`,
+//! know of the case subcommands), `converge_args` (a refinement study's options), `ensemble_args` (an ensemble's), `bench_args`,
 //! `args`, `plate_args` and `shape_args` (the case options: solver, plate, section),
 //! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
 mod args;
@@ -15,6 +15,7 @@ mod checkpointer;
 mod command;
 mod config;
 mod converge_args;
+mod ensemble_args;
 mod flags;
 mod limits;
 mod plate_args;
@@ -61,6 +62,7 @@ pub fn main() -> ExitCode {
         Command::Bench(args) => bench_args::run_bench(args).map(|()| Exit::Completed),
         Command::Sweep(args) => return sweep_cases::run_sweep(args).into(),
         Command::Converge(args) => return sweep_cases::run_converge(args).into(),
+        Command::Ensemble(args) => return ensemble_args::run_ensemble(args).into(),
         Command::Resume(args) => resume::run_resume(args),
         cmd => run::run_case(cmd),
     };
