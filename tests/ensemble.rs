@@ -55,6 +55,12 @@ fn members_branch_are_pooled_and_resume() {
     let avg = means.iter().sum::<f64>() / 3.0;
     assert!((w["mean"].as_f64().unwrap() - avg).abs() < 1e-12, "{w}");
     assert!(w["half_width"].as_f64().unwrap() > 0.0 && w["members"] == 3);
+    // Two turns after the branch the members have not parted (a chaotic separation takes tens
+    // of c/U to grow from 10⁻²): measured from their θ̇, not assumed, and said so.
+    let parting = &p["parting"];
+    assert!(parting["time"].is_null() && parting["independent"] == false, "{parting}");
+    let (start, branch) = (parting["window_start"].as_f64(), p["branch"]["t"].as_f64());
+    assert!(start.unwrap() > branch.unwrap(), "{p}");
     // Every member's CSV holds the spun-up run's rows first, then its own.
     let spin = read(&dir, "spin.csv");
     let body = |b: &[u8]| {
