@@ -1,4 +1,4 @@
-//! The command line: one subcommand per case (docs/physics.md §1) plus `bench`, `sweep` and `converge`. The
+//! The command line: one subcommand per case (docs/physics.md §1) plus `bench`, `sweep`, `converge`, `ensemble` and `resume`. The
 //! only layer that knows clap; it turns flags into the library's typed descriptions (the case options into
 //! [`RunBuilder`](platefall_core::config::RunBuilder)s, the sweep's into a sweep request) and
 //! typed errors into one-line messages that name the flag and an exit code (`Exit`).
