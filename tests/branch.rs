@@ -82,14 +82,24 @@ fn a_branch_is_the_resume_plus_its_perturbation() {
     // Rows up to the branch (400 steps) are the same; the first row after it differs by about
     // D (the flow reacts within the step: 0.1 D to 2 D), and the two runs stay apart.
     let k = plain.iter().zip(&up).position(|(a, b)| a != b).unwrap();
-    assert!(k >= 400 && k <= 402, "first difference at row {k}");
+    assert!((400..=402).contains(&k), "first difference at row {k}");
     let d = up[k].1 - plain[k].1;
     assert!(d > 1e-4 && d < 2e-3, "θ̇ after the branch differs by {d}");
     assert!(plain.last() != up.last());
     // A branch that names no CSV or summary writes none: the stopped run's stay as they were.
     let (csv, json) = (read(&dir, "cut.csv"), read(&dir, "cut.json"));
-    let args = ["resume", "branch.ckpt", "-q", "--no-save", "--perturb-omega", "1e-3"];
-    expect_code(&run(&dir, &[&args[..], &["--checkpoint", "alone.ckpt"]].concat()), 0);
+    let args = [
+        "resume",
+        "branch.ckpt",
+        "-q",
+        "--no-save",
+        "--perturb-omega",
+        "1e-3",
+    ];
+    expect_code(
+        &run(&dir, &[&args[..], &["--checkpoint", "alone.ckpt"]].concat()),
+        0,
+    );
     assert!(read(&dir, "cut.csv") == csv && read(&dir, "cut.json") == json);
     assert!(dir.join("alone.ckpt").exists());
     let _ = std::fs::remove_dir_all(&dir);
@@ -117,7 +127,14 @@ fn bad_branches_are_refused_in_one_line() {
     assert!(!dir.join("bad.csv").exists());
     // Without --checkpoint the branch would write over the checkpoint it branches from.
     let before = read(&dir, "branch.ckpt");
-    let args = ["resume", "branch.ckpt", "-q", "--no-save", "--perturb-omega", "1e-3"];
+    let args = [
+        "resume",
+        "branch.ckpt",
+        "-q",
+        "--no-save",
+        "--perturb-omega",
+        "1e-3",
+    ];
     let out = run(&dir, &args);
     expect_code(&out, 2);
     let err = String::from_utf8_lossy(&out.stderr);
@@ -137,9 +154,26 @@ fn bad_branches_are_refused_in_one_line() {
     );
     assert!(!dir.join("held.csv").exists());
     // A static plate moves as prescribed: it has no θ̇ of its own.
-    let args = ["static", "--resolution", "16", "--t-end", "0.2", "--no-save"];
-    expect_code(&run(&dir, &[&args[..], &["--checkpoint", "branch.ckpt"]].concat()), 0);
-    let out = branch(&dir, "static", &["--perturb-omega", "1e-3", "--t-end", "0.4"]);
+    let args = [
+        "static",
+        "--resolution",
+        "16",
+        "--t-end",
+        "0.2",
+        "--no-save",
+    ];
+    expect_code(
+        &run(
+            &dir,
+            &[&args[..], &["--checkpoint", "branch.ckpt"]].concat(),
+        ),
+        0,
+    );
+    let out = branch(
+        &dir,
+        "static",
+        &["--perturb-omega", "1e-3", "--t-end", "0.4"],
+    );
     expect_code(&out, 2);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(

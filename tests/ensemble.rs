@@ -13,8 +13,21 @@ use checkpoint_common::*;
 /// and CSV.
 fn spun_up(dir: &Path) {
     let args = [
-        "free", "--resolution", "16", "--develop", "1", "--turns", "1", "--checkpoint",
-        "spin.ckpt", "--csv", "spin.csv", "--no-save", "-q", "--progress", "off",
+        "free",
+        "--resolution",
+        "16",
+        "--develop",
+        "1",
+        "--turns",
+        "1",
+        "--checkpoint",
+        "spin.ckpt",
+        "--csv",
+        "spin.csv",
+        "--no-save",
+        "-q",
+        "--progress",
+        "off",
     ];
     expect_code(&run(dir, &args), 0);
 }
@@ -58,7 +71,10 @@ fn members_branch_are_pooled_and_resume() {
     // Two turns after the branch the members have not parted (a chaotic separation takes tens
     // of c/U to grow from 10⁻²): measured from their θ̇, not assumed, and said so.
     let parting = &p["parting"];
-    assert!(parting["time"].is_null() && parting["independent"] == false, "{parting}");
+    assert!(
+        parting["time"].is_null() && parting["independent"] == false,
+        "{parting}"
+    );
     let (start, branch) = (parting["window_start"].as_f64(), p["branch"]["t"].as_f64());
     assert!(start.unwrap() > branch.unwrap(), "{p}");
     // Every member's CSV holds the spun-up run's rows first, then its own.
@@ -97,17 +113,32 @@ fn bad_ensembles_are_refused_in_one_line_before_anything_runs() {
     let dir = scratch("ensemble-refusals");
     spun_up(&dir);
     for (extra, what) in [
-        (&["--members", "1", "--perturbation", "1e-3"][..], "--members 1"),
-        (&["--members", "3", "--perturbation", "0"][..], "--perturbation 0"),
-        (&["--members", "3", "--perturbation", "NaN"][..], "--perturbation NaN"),
-        (&["--members", "3", "--perturbation", "1e-3", "--t-end", "2"][..], "--t-end 2"),
+        (
+            &["--members", "1", "--perturbation", "1e-3"][..],
+            "--members 1",
+        ),
+        (
+            &["--members", "3", "--perturbation", "0"][..],
+            "--perturbation 0",
+        ),
+        (
+            &["--members", "3", "--perturbation", "NaN"][..],
+            "--perturbation NaN",
+        ),
+        (
+            &["--members", "3", "--perturbation", "1e-3", "--t-end", "2"][..],
+            "--t-end 2",
+        ),
     ] {
         let out = ensemble(&dir, "bad", extra);
         expect_code(&out, 2);
         let err = String::from_utf8_lossy(&out.stderr);
         let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
         assert_eq!(lines.len(), 1, "one line: {err}");
-        assert!(lines[0].starts_with("error: ") && lines[0].contains(what), "{err}");
+        assert!(
+            lines[0].starts_with("error: ") && lines[0].contains(what),
+            "{err}"
+        );
         assert!(!dir.join("bad").exists(), "{what}: nothing runs");
     }
     let _ = std::fs::remove_dir_all(&dir);

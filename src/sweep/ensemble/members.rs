@@ -159,8 +159,8 @@ pub(crate) fn branch_of(spec: &EnsembleSpec) -> Result<(Checkpoint, Branch), Fai
              fewer than {n}"
         )));
     }
-    let checkpoint = std::path::absolute(&spec.from)
-        .map_err(|e| bad(format!("--from {shown}: {e}")))?;
+    let checkpoint =
+        std::path::absolute(&spec.from).map_err(|e| bad(format!("--from {shown}: {e}")))?;
     let steps = sim.flow.steps;
     Ok((
         ckpt,
@@ -204,14 +204,14 @@ pub(crate) fn case_of(
     ];
     args.extend(spec.turns.map(|n| format!("--turns={n}")));
     args.extend(spec.t_end.map(|t| format!("--t-end={t}")));
-    args.extend(spec.checkpoint_every.map(|c| format!("--checkpoint-every={c}")));
+    args.extend(
+        spec.checkpoint_every
+            .map(|c| format!("--checkpoint-every={c}")),
+    );
     CaseSpec {
         index,
         id: member.id.clone(),
-        params: vec![(
-            "perturb-omega".into(),
-            Value::Float(member.perturbation),
-        )],
+        params: vec![("perturb-omega".into(), Value::Float(member.perturbation))],
         args,
     }
 }

@@ -61,7 +61,11 @@ fn at(t: &[f64], x: &[f64], s: f64, k: &mut usize) -> f64 {
         *k += 1;
     }
     let (a, b) = (t[*k], t[*k + 1]);
-    let f = if b > a { ((s - a) / (b - a)).clamp(0.0, 1.0) } else { 0.0 };
+    let f = if b > a {
+        ((s - a) / (b - a)).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     x[*k] + f * (x[*k + 1] - x[*k])
 }
 

@@ -125,6 +125,10 @@ mod tests {
         assert!((w.within_std_error.unwrap() - 0.03f64.sqrt() / 3.0).abs() < 1e-15);
         assert_eq!(w.n_eff, Some(30.0));
         assert!(q["period"].interval.within_std_error.is_none());
-        assert!(table(&q).contains("| mean_omega | 2.0 ± 2.5 |"), "{}", table(&q));
+        assert!(
+            table(&q).contains("| mean_omega | 2.0 ± 2.5 |"),
+            "{}",
+            table(&q)
+        );
     }
 }

@@ -14,8 +14,8 @@ use crate::sweep::commands::local;
 use crate::sweep::failure::{write_output, Failure};
 use crate::sweep::layout::Layout;
 use crate::sweep::plan::{Axis, CaseSpec, Plan};
-use crate::sweep::values::{Scale, Value};
 use crate::sweep::progress::ProgressMode;
+use crate::sweep::values::{Scale, Value};
 use platefall_core::sim::CaseKind;
 
 /// What `DIR/ensemble.json` holds.
@@ -72,7 +72,10 @@ fn run(
         .collect();
     let axis = Axis {
         name: "perturb-omega".into(),
-        values: members.iter().map(|m| Value::Float(m.perturbation)).collect(),
+        values: members
+            .iter()
+            .map(|m| Value::Float(m.perturbation))
+            .collect(),
         scale: Scale::Linear,
     };
     let text = format!(
@@ -88,7 +91,11 @@ fn run(
         return Ok(code);
     }
     let written = write_pooled(&layout, &cases, &branch, &members)?;
-    Ok(if code != Exit::Completed { code } else { written })
+    Ok(if code != Exit::Completed {
+        code
+    } else {
+        written
+    })
 }
 
 /// A completed member's summary.
@@ -129,12 +136,17 @@ fn write_pooled(
     write_output(&layout.output("ensemble.json"), (json + "\n").as_bytes())?;
     write_output(&layout.output("ensemble.md"), md.as_bytes())?;
     println!("{md}");
-    println!("ensemble: {}/ensemble.md, ensemble.json", layout.dir.display());
-    Ok(if pooled.completed.len() == members.len() && members.len() >= 2 {
-        Exit::Completed
-    } else {
-        Exit::Diverged
-    })
+    println!(
+        "ensemble: {}/ensemble.md, ensemble.json",
+        layout.dir.display()
+    );
+    Ok(
+        if pooled.completed.len() == members.len() && members.len() >= 2 {
+            Exit::Completed
+        } else {
+            Exit::Diverged
+        },
+    )
 }
 
 /// The ensemble's Markdown: what was pooled, when the members parted, the table.
@@ -148,7 +160,11 @@ fn markdown(p: &Pooled) -> String {
         }) => format!(
             "The members' θ̇ decorrelated at t = {t:.2} ({a:.2} after the branch); their windows \
              of averaging start {}.",
-            if *independent { "after it" } else { "before it: lengthen the discarded part (--average-from-turn)" }
+            if *independent {
+                "after it"
+            } else {
+                "before it: lengthen the discarded part (--average-from-turn)"
+            }
         ),
         _ => "The members' θ̇ did not decorrelate within their common span: they are not yet \
               independent (lengthen the run or the perturbation)."
