@@ -105,6 +105,14 @@ fn members_branch_are_pooled_and_resume() {
     assert!(read(&dir, "ens/cases/m001/run.csv") == m1);
     assert!(read(&dir, "ens/cases/m002/summary.json") == summaries);
     assert_eq!(pooled(&dir)["quantities"]["mean_omega"], *w);
+    // `platefall sweep collect` and `run-case` read a plan: they send the user back here.
+    let out = run(&dir, &["sweep", "collect", "ens"]);
+    expect_code(&out, 2);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.trim().lines().count() == 1 && err.contains("was made by `platefall ensemble`"),
+        "{err}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }
 

@@ -482,6 +482,10 @@ fn check_signal_lead(s: &SlurmPlan, from_flags: &[&str]) -> Result<(), PlanError
     }
 }
 
+/// How the `plan.toml` of a plan made by a command begins (then the command's name): such a
+/// directory goes on with that command, not with `platefall sweep`.
+pub(crate) const MADE_BY: &str = "# made by `platefall ";
+
 impl Plan {
     /// A plan made by a command rather than read from a file (`platefall ensemble`): cases of
     /// `case` along the one swept `axis`, with the diagram along it and nothing else; `text` is

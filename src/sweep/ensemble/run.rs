@@ -13,7 +13,7 @@ use crate::exit::Exit;
 use crate::sweep::commands::local;
 use crate::sweep::failure::{write_output, Failure};
 use crate::sweep::layout::Layout;
-use crate::sweep::plan::{Axis, CaseSpec, Plan};
+use crate::sweep::plan::{Axis, CaseSpec, Plan, MADE_BY};
 use crate::sweep::progress::ProgressMode;
 use crate::sweep::values::{Scale, Value};
 use platefall_core::sim::CaseKind;
@@ -79,7 +79,7 @@ fn run(
         scale: Scale::Linear,
     };
     let text = format!(
-        "# platefall ensemble: {} members branched from {} (not a plan for `platefall sweep`; \
+        "{MADE_BY}ensemble`: {} members branched from {} (not a plan for `platefall sweep`; \
          run the same `platefall ensemble` again to go on)\n",
         members.len(),
         branch.checkpoint.display()
