@@ -7,6 +7,7 @@ use clap::{Parser, Subcommand};
 use super::args::{ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs};
 use super::bench_args::BenchArgs;
 use super::converge_args::ConvergeArgs;
+use super::ensemble_args::EnsembleArgs;
 use super::record_args::RecordArgs;
 use super::resume_args::ResumeArgs;
 use super::sweep_args::SweepArgs;
@@ -56,6 +57,9 @@ pub enum Command {
     /// observed order, the Richardson extrapolation and the grid-convergence index per quantity,
     /// with the runs' 95 % intervals deciding which differences are resolved.
     Converge(ConvergeArgs),
+    /// Run M members branched from a spun-up run's checkpoint, each with its own small
+    /// perturbation of θ̇, and pool their means into ensemble means with 95 % intervals.
+    Ensemble(EnsembleArgs),
     /// Continue a run from its checkpoint (--checkpoint-every, or a stop by SIGTERM, SIGUSR1 or
     /// Ctrl-C), exactly as if it had not stopped; or extend a completed one (--t-end, --turns).
     #[command(after_help = Exit::help(false))]
@@ -71,9 +75,11 @@ impl Command {
             Command::Forced(a) => Some((&a.solver, &a.record)),
             Command::Pinned(a) => Some((&a.solver, &a.record)),
             Command::Free(a) => Some((&a.solver, &a.record)),
-            Command::Bench(_) | Command::Sweep(_) | Command::Converge(_) | Command::Resume(_) => {
-                None
-            }
+            Command::Bench(_)
+            | Command::Sweep(_)
+            | Command::Converge(_)
+            | Command::Ensemble(_)
+            | Command::Resume(_) => None,
         }
     }
 }

@@ -15,6 +15,7 @@ pub fn run_config(cmd: &Command) -> Result<ValidatedConfig, ArgError> {
         Command::Bench(_) => return Err(ArgError::NotACase("bench")),
         Command::Sweep(_) => return Err(ArgError::NotACase("sweep")),
         Command::Converge(_) => return Err(ArgError::NotACase("converge")),
+        Command::Ensemble(_) => return Err(ArgError::NotACase("ensemble")),
         Command::Resume(_) => return Err(ArgError::NotACase("resume")),
     };
     if let Some((solver, _)) = cmd.case_args() {

@@ -1,19 +1,21 @@
-//! The command line: one subcommand per case (docs/physics.md §1) plus `bench`, `sweep` and `converge`. The
+//! The command line: one subcommand per case (docs/physics.md §1) plus `bench`, `sweep`, `converge`, `ensemble` and `resume`. The
 //! only layer that knows clap; it turns flags into the library's typed descriptions (the case options into
 //! [`RunBuilder`](platefall_core::config::RunBuilder)s, the sweep's into a sweep request) and
 //! typed errors into one-line messages that name the flag and an exit code (`Exit`).
 //!
 //! Files, each using only those after it: `command` (the grammar), `config` (a case's run),
 //! `run` (running it), `sweep_args` and `sweep_cases` (the sweep's options and what it needs to
-//! know of the case subcommands), `converge_args` (a refinement study's options), `bench_args`,
+//! know of the case subcommands), `converge_args` (a refinement study's options), `ensemble_args` (an ensemble's), `bench_args`,
 //! `args`, `plate_args` and `shape_args` (the case options: solver, plate, section),
 //! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
 mod args;
 mod bench_args;
+mod branch;
 mod checkpointer;
 mod command;
 mod config;
 mod converge_args;
+mod ensemble_args;
 mod flags;
 mod limits;
 mod plate_args;
@@ -66,6 +68,7 @@ pub fn main() -> ExitCode {
         Command::Bench(args) => bench_args::run_bench(args).map(|()| Exit::Completed),
         Command::Sweep(args) => return sweep_cases::run_sweep(args).into(),
         Command::Converge(args) => return sweep_cases::run_converge(args).into(),
+        Command::Ensemble(args) => return ensemble_args::run_ensemble(args).into(),
         Command::Resume(args) => resume::run_resume(args),
         cmd => run::run_case(cmd),
     };

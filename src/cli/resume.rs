@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context as _;
 
+use super::branch;
 use super::checkpointer::Checkpointer;
 use super::command::{parse, Command};
 use super::config::run_config;
@@ -54,7 +55,11 @@ pub enum ResumeRefusal {
 /// Runs `platefall resume`.
 pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let given_every = args.checkpoint.given_every()?;
-    let ckpt = read_checkpoint(&args.file, &version())?;
+    let mut ckpt = read_checkpoint(&args.file, &version())?;
+    if let Some(d) = args.perturb_omega {
+        branch::own_checkpoint(&args.file, &args.checkpoint_out())?;
+        branch::perturb_omega(&mut ckpt.sim, d)?;
+    }
     let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
         file: args.file.clone(),
         why: e.kind().to_string(),
@@ -68,6 +73,9 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let config = resumed_config(&cmd.command, &ckpt, args)?;
     let mut info = ckpt.resume.clone();
     (info.t_end, info.turns) = (config.time.t_end, config.time.turns);
+    if let Some(turn) = args.average_from_turn {
+        branch::set_average_from_turn(&mut info, turn)?;
+    }
     let opts = resumed_outputs(record, &mut info, &ckpt, args, config.case.kind())?;
     let every = given_every.or(info.every);
     info.every = every;
@@ -110,11 +118,13 @@ fn resumed_config(
     let mut c = config.config().clone();
     c.time.t_end = args.t_end.unwrap_or(ckpt.resume.t_end);
     c.time.turns = args.turns.or(ckpt.resume.turns);
+    c.time.average_from_turn = args.average_from_turn.unwrap_or(c.time.average_from_turn);
     Ok(c.validate().map_err(super::flags::ArgError::from)?)
 }
 
 /// The resumed run's outputs: the run's own (the CSV rewritten with its earlier rows, a
-/// continuation recording), or those given; `info` takes them for the next checkpoint.
+/// continuation recording), or those given (a branch: only those given); `info` takes them
+/// for the next checkpoint.
 fn resumed_outputs(
     record: &RecordArgs,
     info: &mut ResumeInfo,
@@ -124,15 +134,19 @@ fn resumed_outputs(
 ) -> anyhow::Result<RecordOptions> {
     let steps = ckpt.sim.flow.steps;
     let mut r = record.clone();
-    r.csv = args.csv.clone().or(info.csv.clone());
-    r.save = match (&args.save, &info.save) {
+    // A branch (an ensemble member) writes only the outputs it names (branch.rs).
+    let branch = args.perturb_omega.is_some();
+    let run_own = |p: &Option<PathBuf>| p.clone().filter(|_| !branch);
+    r.csv = args.csv.clone().or(run_own(&info.csv));
+    r.save = match (&args.save, run_own(&info.save)) {
         (Some(p), _) => Some(p.clone()),
-        (None, Some(p)) => Some(continuation(p, steps)),
+        (None, Some(p)) => Some(continuation(&p, steps)),
         (None, None) => None,
     };
     r.no_save = args.no_save || r.save.is_none();
     r.quiet |= args.quiet;
-    let summary = args.summary.clone().or(info.summary.clone());
+    r.progress = args.progress.unwrap_or(r.progress);
+    let summary = args.summary.clone().or(run_own(&info.summary));
     let ckpt_path = args.checkpoint_out();
     let others: Vec<(&'static str, &Path)> = summary
         .iter()
@@ -160,6 +174,9 @@ fn resumed_outputs(
     };
     opts.recording_id = info.recording_id.clone();
     let abs = |p: &Option<PathBuf>| p.as_deref().map(std::path::absolute).transpose();
+    if branch {
+        info.save = abs(&args.save).context("the recording's path")?;
+    }
     info.csv = abs(&opts.csv).context("the CSV's path")?;
     info.summary = abs(&summary).context("the summary's path")?;
     Ok(opts)

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::args::CheckpointArgs;
+use super::record_args::ProgressArg;
 
 /// `platefall resume`'s options (the checkpoint options are a case run's, with resume's defaults).
 #[derive(Args, Debug, Clone)]
@@ -43,6 +44,17 @@ pub struct ResumeArgs {
     /// No progress output
     #[arg(long, short = 'q')]
     pub quiet: bool,
+    /// Progress display on stderr [default: the run's]
+    #[arg(long, value_enum, value_name = "MODE")]
+    pub progress: Option<ProgressArg>,
+    /// Branch an ensemble member: add D to the plate's angular velocity θ̇ (rad per c/U) before
+    /// going on (pinned and free runs)
+    #[arg(long, value_name = "D", allow_negative_numbers = true)]
+    pub perturb_omega: Option<f64>,
+    /// Average the summary's means from this complete turn after release on [default: the
+    /// run's]
+    #[arg(long, value_name = "K")]
+    pub average_from_turn: Option<usize>,
     // --checkpoint-every, --checkpoint: a case run's options, with resume's defaults (above).
     #[command(flatten)]
     pub checkpoint: CheckpointArgs,

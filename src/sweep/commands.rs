@@ -190,6 +190,15 @@ pub(crate) fn open_prepared(
     commands: &dyn CaseCommands,
 ) -> Result<(Layout, Plan, Manifest), Failure> {
     let layout = Layout::new(dir);
+    let text = std::fs::read_to_string(layout.plan()).unwrap_or_default();
+    if let Some(rest) = text.strip_prefix(plan::MADE_BY) {
+        let command = rest.split('`').next().unwrap_or_default();
+        return Err(Failure::input(format!(
+            "{} was made by `platefall {command}`, not from a plan: run that command again to go \
+             on",
+            layout.dir.display()
+        )));
+    }
     let manifest = read_manifest(&layout)?.ok_or_else(|| {
         Failure::input(format!(
             "{} is not a sweep directory (no sweep.json): give the directory a sweep wrote",

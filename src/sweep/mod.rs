@@ -15,13 +15,15 @@
 //! lock), `cases`, `plan`, `options` and `values` (the plan format and its cases), `plan_error`, `json`
 //! (ordered objects), `failure` (exit codes, atomic writes), `clock`; `slurm_time` (Slurm's time limits) below
 //! `plan` and `slurm`. `converge` is a refinement
-//! study: a sweep over one refined option, analysed for the observed order of convergence.
+//! study: a sweep over one refined option, analysed for the observed order of convergence;
+//! `ensemble` runs members branched from one checkpoint as a sweep and pools their means.
 mod cases;
 mod child;
 mod clock;
 mod commands;
 pub(crate) mod converge;
 mod diagram;
+pub(crate) mod ensemble;
 mod failure;
 mod json;
 mod layout;

@@ -481,3 +481,34 @@ fn check_signal_lead(s: &SlurmPlan, from_flags: &[&str]) -> Result<(), PlanError
         _ => Ok(()),
     }
 }
+
+/// How the `plan.toml` of a plan made by a command begins (then the command's name): such a
+/// directory goes on with that command, not with `platefall sweep`.
+pub(crate) const MADE_BY: &str = "# made by `platefall ";
+
+impl Plan {
+    /// A plan made by a command rather than read from a file (`platefall ensemble`): cases of
+    /// `case` along the one swept `axis`, with the diagram along it and nothing else; `text` is
+    /// what the directory's `plan.toml` records.
+    pub(crate) fn along(name: &str, case: CaseKind, axis: Axis, text: String) -> Plan {
+        let diagram = Diagram {
+            x: axis.name.clone(),
+            y: None,
+            value: default_value_key(case).to_string(),
+            x_scale: axis.scale,
+            y_scale: Scale::default(),
+        };
+        Plan {
+            name: name.to_string(),
+            case,
+            output: None,
+            fixed: Vec::new(),
+            grid: vec![axis],
+            zip: Vec::new(),
+            outputs: Outputs::default(),
+            diagram,
+            slurm: SlurmPlan::default(),
+            text,
+        }
+    }
+}

@@ -10,7 +10,10 @@
 //!   of the drag peak, the projected width.
 //! - [`stats`]: confidence intervals of time means of autocorrelated series (batch means,
 //!   integrated autocorrelation times, Student's t); [`convergence`]: observed order, Richardson
-//!   extrapolation and the grid-convergence index of a refinement study.
+//!   extrapolation and the grid-convergence index of a refinement study; [`ensemble`]: the
+//!   mean and interval of an ensemble of independent members, their independence, the
+//!   separation of two ensembles and the planner; [`rng`]: the seeded generator of the
+//!   ensembles' perturbations and of the synthetic tests.
 //! - [`keys`]: the run summary's data with its stable JSON keys; [`intervals`]: the batches of a
 //!   run and the interval of every mean in its summary; [`summary`]: the summary of a run, its
 //!   means and then their intervals; [`report`]: the end-of-run text; [`regime`]: what a falling
@@ -37,6 +40,7 @@
 pub mod analysis;
 pub mod contour;
 pub mod convergence;
+pub mod ensemble;
 pub mod fields;
 pub mod intervals;
 pub mod keys;
@@ -46,6 +50,7 @@ pub mod plot_range;
 pub mod regime;
 pub mod report;
 pub mod resample;
+pub mod rng;
 pub mod stats;
 pub mod summary;
 pub mod view;

@@ -467,32 +467,7 @@ pub fn time_bins(t: &[f64], x: &[f64], bins: usize) -> Vec<f64> {
 mod tests {
     use super::*;
 
-    /// A small, seeded generator (SplitMix64) with Box–Muller normals: the tests are reproducible.
-    struct Rng(u64);
-    impl Rng {
-        fn uniform(&mut self) -> f64 {
-            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^= z >> 31;
-            ((z >> 11) as f64 + 0.5) / (1u64 << 53) as f64
-        }
-        fn normal(&mut self) -> f64 {
-            let (u, v) = (self.uniform(), self.uniform());
-            (-2.0 * u.ln()).sqrt() * (2.0 * std::f64::consts::PI * v).cos()
-        }
-        /// An AR(1) series x_k = φ x_(k−1) + e_k, started from its stationary distribution.
-        fn ar1(&mut self, phi: f64, n: usize) -> Vec<f64> {
-            let mut x = self.normal() / (1.0 - phi * phi).sqrt();
-            (0..n)
-                .map(|_| {
-                    x = phi * x + self.normal();
-                    x
-                })
-                .collect()
-        }
-    }
+    use crate::rng::Rng;
 
     #[test]
     fn ln_gamma_matches_factorials_and_half_integers() {

@@ -1,0 +1,153 @@
+//! `platefall ensemble` end to end on a tiny case (the card at N = 16, spun up to one turn,
+//! three members of two more turns): the members branch from the spun-up state with their own
+//! perturbations, their means are pooled into `ensemble.json`, the same command goes on with
+//! only the missing members (reproducibly: a member run again is byte for byte the same), and
+//! bad requests are refused with one line and exit code 2 before anything runs.
+mod checkpoint_common;
+
+use std::path::Path;
+
+use checkpoint_common::*;
+
+/// The spun-up run: the card at N = 16 released at t = 1, to one turn, with its checkpoint
+/// and CSV.
+fn spun_up(dir: &Path) {
+    let args = [
+        "free",
+        "--resolution",
+        "16",
+        "--develop",
+        "1",
+        "--turns",
+        "1",
+        "--checkpoint",
+        "spin.ckpt",
+        "--csv",
+        "spin.csv",
+        "--no-save",
+        "-q",
+        "--progress",
+        "off",
+    ];
+    expect_code(&run(dir, &args), 0);
+}
+
+/// `ensemble` of the spun-up run into `out` with `extra` options.
+fn ensemble(dir: &Path, out: &str, extra: &[&str]) -> std::process::Output {
+    let mut args = vec!["ensemble", "--from", "spin.ckpt", "--output", out];
+    args.extend(["--turns", "3", "--average-from-turn", "2", "--jobs", "2"]);
+    args.extend(["--progress", "off"]);
+    args.extend(extra);
+    run(dir, &args)
+}
+
+/// The pooled JSON.
+fn pooled(dir: &Path) -> serde_json::Value {
+    serde_json::from_slice(&read(dir, "ens/ensemble.json")).unwrap()
+}
+
+#[test]
+fn members_branch_are_pooled_and_resume() {
+    let dir = scratch("ensemble");
+    spun_up(&dir);
+    let three = ["--members", "3", "--perturbation", "1e-2", "--seed", "5"];
+    expect_code(&ensemble(&dir, "ens", &three), 0);
+    let p = pooled(&dir);
+    assert_eq!(p["completed"].as_array().unwrap().len(), 3, "{p}");
+    let w = &p["quantities"]["mean_omega"];
+    let means: Vec<f64> = w["member_means"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    // Three members, each its own run: distinct means, pooled into their average with a
+    // positive half-width.
+    assert_eq!(means.len(), 3);
+    assert!(means[0] != means[1] && means[1] != means[2] && means[0] != means[2]);
+    let avg = means.iter().sum::<f64>() / 3.0;
+    assert!((w["mean"].as_f64().unwrap() - avg).abs() < 1e-12, "{w}");
+    assert!(w["half_width"].as_f64().unwrap() > 0.0 && w["members"] == 3);
+    // Two turns after the branch the members have not parted (a chaotic separation takes tens
+    // of c/U to grow from 10⁻²): measured from their θ̇, not assumed, and said so.
+    let parting = &p["parting"];
+    assert!(
+        parting["time"].is_null() && parting["independent"] == false,
+        "{parting}"
+    );
+    let (start, branch) = (parting["window_start"].as_f64(), p["branch"]["t"].as_f64());
+    assert!(start.unwrap() > branch.unwrap(), "{p}");
+    // Every member's CSV holds the spun-up run's rows first, then its own.
+    let spin = read(&dir, "spin.csv");
+    let body = |b: &[u8]| {
+        let text = String::from_utf8(b.to_vec()).unwrap();
+        text.lines()
+            .filter(|l| !l.starts_with('#'))
+            .map(String::from)
+            .collect::<Vec<_>>()
+    };
+    let spin_rows = body(&spin);
+    let m0 = read(&dir, "ens/cases/m000/run.csv");
+    assert_eq!(body(&m0)[..spin_rows.len()], spin_rows[..]);
+    assert!(body(&m0).len() > spin_rows.len() + 100);
+    // The same command again runs nothing; with one member gone (as if it never ran), it runs
+    // that one alone, byte for byte as before (its perturbation comes from the seed).
+    let summaries = read(&dir, "ens/cases/m002/summary.json");
+    let m1 = read(&dir, "ens/cases/m001/run.csv");
+    let out = ensemble(&dir, "ens", &three);
+    expect_code(&out, 0);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("(3 already done); running 0"));
+    std::fs::remove_dir_all(dir.join("ens/cases/m001")).unwrap();
+    let out = ensemble(&dir, "ens", &three);
+    expect_code(&out, 0);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("(2 already done); running 1"), "{err}");
+    assert!(read(&dir, "ens/cases/m001/run.csv") == m1);
+    assert!(read(&dir, "ens/cases/m002/summary.json") == summaries);
+    assert_eq!(pooled(&dir)["quantities"]["mean_omega"], *w);
+    // `platefall sweep collect` and `run-case` read a plan: they send the user back here.
+    let out = run(&dir, &["sweep", "collect", "ens"]);
+    expect_code(&out, 2);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.trim().lines().count() == 1 && err.contains("was made by `platefall ensemble`"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bad_ensembles_are_refused_in_one_line_before_anything_runs() {
+    let dir = scratch("ensemble-refusals");
+    spun_up(&dir);
+    for (extra, what) in [
+        (
+            &["--members", "1", "--perturbation", "1e-3"][..],
+            "--members 1",
+        ),
+        (
+            &["--members", "3", "--perturbation", "0"][..],
+            "--perturbation 0",
+        ),
+        (
+            &["--members", "3", "--perturbation", "NaN"][..],
+            "--perturbation NaN",
+        ),
+        (
+            &["--members", "3", "--perturbation", "1e-3", "--t-end", "2"][..],
+            "--t-end 2",
+        ),
+    ] {
+        let out = ensemble(&dir, "bad", extra);
+        expect_code(&out, 2);
+        let err = String::from_utf8_lossy(&out.stderr);
+        let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
+        assert_eq!(lines.len(), 1, "one line: {err}");
+        assert!(
+            lines[0].starts_with("error: ") && lines[0].contains(what),
+            "{err}"
+        );
+        assert!(!dir.join("bad").exists(), "{what}: nothing runs");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
