@@ -11,7 +11,7 @@ use serde::Serialize;
 
 use crate::pool;
 use platefall_core::flow3d::{
-    FlowParams3, FlowSolver3, Frame3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
+    Flow3Error, FlowParams3, FlowSolver3, Frame3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
 };
 
 /// The plate's thickness (chords): the dissertation's card.
@@ -50,15 +50,7 @@ pub(crate) fn bench_one3(
     threads: usize,
 ) -> anyhow::Result<Bench3Row> {
     let pool = pool::pool(threads)?;
-    let spec = GridSpec3 {
-        resolution,
-        thickness: THICKNESS,
-        span,
-        extent: [EXTENT; 3],
-        stretch: Stretch3::GrowthCap(GROWTH),
-        memory_limit: MEMORY_LIMIT,
-    };
-    let grid = Grid3::new(&spec)?;
+    let grid = bench_grid(resolution, span)?;
     let (n, cells) = (grid.n, grid.cells());
     let frame = Frame3::body([-(0.4f64.cos()), 0.4f64.sin(), 0.0], [0.0, 0.0, 1.0]);
     let t0 = Instant::now();
@@ -80,6 +72,22 @@ pub(crate) fn bench_one3(
         iterations_per_step: iterations as f64 / steps as f64,
         total_ns_per_cell: seconds * 1e9 / (steps as f64 * cells as f64),
         bytes_per_cell,
+    })
+}
+
+/// The benchmark's grid at `resolution` cells per chord.
+///
+/// # Errors
+/// The grid's own refusal: a span too short for the resolution, a resolution out of range, a
+/// grid over the memory limit.
+pub(crate) fn bench_grid(resolution: usize, span: Span) -> Result<Grid3, Flow3Error> {
+    Grid3::new(&GridSpec3 {
+        resolution,
+        thickness: THICKNESS,
+        span,
+        extent: [EXTENT; 3],
+        stretch: Stretch3::GrowthCap(GROWTH),
+        memory_limit: MEMORY_LIMIT,
     })
 }
 

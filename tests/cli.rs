@@ -396,3 +396,31 @@ fn bad_polygons_are_refused_naming_the_fault() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn bad_three_dimensional_benchmarks_are_refused_in_one_line() {
+    let dir = scratch("bench3");
+    let json = dir.join("b.json");
+    let j = json.to_str().unwrap();
+    let cases = [
+        ("--span 0", "span 0 is out of range"),
+        ("--span periodic:-1", "span -1 is out of range"),
+        ("--span wide", "`wide` is not a span"),
+        ("--span 0.1 --resolutions 8", "at least 0.25 chords"),
+        ("--span 2.67 --resolutions 600", "over the limit"),
+        ("--span 2.67 --card", "cannot be used with"),
+    ];
+    for (line, needle) in cases {
+        let mut args = vec!["bench", "--steps", "1", "--json", j];
+        args.extend(line.split_whitespace());
+        let (code, _, err) = platefall(&args);
+        assert_eq!(code, 2, "{line}: exit {code}, stderr {err}");
+        let first = err.lines().next().unwrap_or("");
+        assert!(
+            first.starts_with("error:") && first.contains(needle),
+            "{line}: stderr {err:?} lacks {needle:?}"
+        );
+        assert!(!err.contains("panicked"), "{line} panicked: {err}");
+        assert!(!json.exists(), "{line} wrote {j}");
+    }
+}

@@ -8,7 +8,7 @@ use clap::Args;
 use super::args::FarFieldArg;
 use super::span_arg::parse_span;
 use crate::bench::{bench_card, bench_one, card_table, table, BenchRow, CardRow};
-use crate::bench3::{bench_one3, table3, Bench3Row};
+use crate::bench3::{bench_grid, bench_one3, table3, Bench3Row};
 use platefall_core::flow3d::Span;
 use platefall_record::files::check_writable;
 use platefall_record::output::write_atomically;
@@ -96,6 +96,10 @@ fn step_rows(args: &BenchArgs) -> anyhow::Result<Vec<BenchRow>> {
 fn step_rows3(args: &BenchArgs, span: Span) -> anyhow::Result<Vec<Bench3Row>> {
     let threads = args.threads.unwrap_or(1);
     let resolutions = args.resolutions.clone().unwrap_or(vec![8, 16, 24]);
+    // Every grid is checked before the first is timed: bad input gets one line.
+    for &n in &resolutions {
+        bench_grid(n, span)?;
+    }
     eprintln!(
         "timing {} 3-D steps per grid, prescribed motion (α = 0.4 translation + rotation 1 about the span)",
         args.steps
