@@ -18,13 +18,16 @@
 //! Files: `grid.rs` (the stretched grid and its spec), `layout.rs` (the padded staggered
 //! arrays), `metrics.rs` (stencil coefficients per axis), `frame.rs` (R, ω, Ẋ₀ and g),
 //! `momentum.rs` (the right-hand side), `boundary.rs` (outer boundary), `plate.rs` (no slip and
-//! the near-wall viscous stencils), `project.rs` (pressure operator, CG solver, correction),
-//! `loads.rs` (forces and moments), `solver.rs` ([`FlowSolver3`]).
+//! the near-wall viscous stencils), `project.rs` (pressure operator, Jacobi CG, correction),
+//! `multigrid.rs` (the default pressure solver, `poisson3` behind the same boundary),
+//! `loads.rs` (forces and moments), `coefficients.rs` (lift, drag, side force and the three
+//! moments), `error.rs` and `params.rs`, `solver.rs` ([`FlowSolver3`]).
 //!
 //! The step allocates nothing after [`FlowSolver3::new`]; the right-hand side and the pressure
 //! solver's sweeps run in parallel over z-planes (rayon), with every reduction in a fixed order,
 //! so the result does not depend on the number of threads.
 mod boundary;
+mod coefficients;
 mod error;
 mod frame;
 mod grid;
@@ -39,6 +42,7 @@ mod project;
 mod solver;
 
 pub use boundary::{OuterBc3, VelocityFn3};
+pub use coefficients::Coefficients3;
 pub use error::{Flow3Error, BLOWUP_FACTOR};
 pub use frame::Frame3;
 pub use grid::{Grid3, GridSpec3, Span, Stretch3, BYTES_PER_CELL};

@@ -2,6 +2,7 @@
 //! equations (docs/physics.md §9), in the 2-D solver's order: begin_step → predict →
 //! impose_boundaries → project → end_step → update_loads.
 use super::boundary::{Outer, OuterBc3};
+use super::coefficients::Coefficients3;
 use super::error::{Flow3Error, BLOWUP_FACTOR};
 use super::frame::Frame3;
 use super::grid::Grid3;
@@ -338,6 +339,12 @@ impl FlowSolver3 {
     /// The loads at the current level.
     pub fn loads(&self) -> Loads3 {
         self.loads
+    }
+
+    /// The loads at the current level as coefficients (lift, drag, side force; roll, yaw, pitch)
+    /// on the span, or the period of a periodic span.
+    pub fn coefficients(&self) -> Coefficients3 {
+        Coefficients3::new(&self.loads, &self.frame, self.grid.spec.span.length())
     }
 
     /// The grid.
