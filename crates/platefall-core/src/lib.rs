@@ -43,6 +43,7 @@ pub mod flow3d;
 pub mod grid;
 pub mod poisson3;
 pub mod sim;
+pub mod sim3;
 
 pub mod config;
 pub mod shape;
