@@ -1,33 +1,15 @@
-//! The flow step allocates nothing after start-up (DESIGN: caller-owned workspaces): counted with a
+//! The flow step allocates nothing after start-up (its workspaces are made once, in the constructor): counted with a
 //! global allocator wrapper around the system allocator.
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+mod counting;
+
+use counting::{allocations, exclusive};
 
 use platefall_core::flow::{FarFieldScheme, FlowParams, FlowSolver, Frame, OuterBc};
 use platefall_core::grid::{Grid, GridSpec};
 
-struct Counting;
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
-
-#[global_allocator]
-static GLOBAL: Counting = Counting;
-
 #[test]
 fn flow_steps_allocate_nothing() {
+    let _alone = exclusive();
     // Each scheme, inside a two-worker pool as a run uses it (the u and v halves of every phase
     // go to the two workers) and on the calling thread alone.
     for scheme in [FarFieldScheme::Explicit, FarFieldScheme::Implicit] {
@@ -72,11 +54,11 @@ fn allocations_in_steps(scheme: FarFieldScheme) -> usize {
         let dt = s.prepare().unwrap().min(0.01);
         s.advance(dt, frame).unwrap();
     }
-    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let before = allocations();
     for _ in 0..20 {
         let dt = s.prepare().unwrap().min(0.01);
         s.advance(dt, frame).unwrap();
         let _ = s.coefficients();
     }
-    ALLOCATIONS.load(Ordering::SeqCst) - before
+    allocations() - before
 }
