@@ -10,7 +10,7 @@ use super::converge_args::ConvergeArgs;
 use super::ensemble_args::EnsembleArgs;
 use super::info::InfoArgs;
 use super::record_args::RecordArgs;
-use super::reproduce::ReproduceArgs;
+use super::reproduce_args::ReproduceArgs;
 use super::resume_args::ResumeArgs;
 use super::sweep_args::SweepArgs;
 use crate::exit::Exit;

@@ -25,6 +25,7 @@ mod plate_args;
 mod provenance;
 mod record_args;
 mod reproduce;
+mod reproduce_args;
 mod resume;
 mod resume_args;
 mod run;

@@ -9,9 +9,10 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::Context as _;
-use clap::Args;
-
+use super::reproduce_args::ReproduceArgs;
 use super::shell::shell_line;
+use super::sweep_cases::CommandLineCases;
+use crate::sweep::CaseCommands as _;
 use crate::version::program_and_commit;
 use crate::exit::Exit;
 use platefall_core::sim::{FieldSnapshot, History, Observer, Simulation, StepSample};
@@ -21,31 +22,6 @@ use platefall_record::viewer::read_recording;
 
 /// The exit code when the rerun differs from the recording.
 const DIFFERS: u8 = 1;
-
-/// `platefall reproduce`'s options.
-#[derive(Args, Debug, Clone)]
-#[command(
-    after_help = "Exit codes:\n  0    identical: every recorded step reproduced bit for bit\n  \
-    1    the rerun differs from the recording (the first difference is printed)\n  \
-    2    bad input: not a complete platefall recording, or its run cannot be made here"
-)]
-pub struct ReproduceArgs {
-    /// The recording (.rrd) a platefall run wrote
-    pub file: PathBuf,
-    /// Where the recording's input files (a --polygon) are written for the rerun [default: the
-    /// recording's name with .inputs, beside it; only made when there are input files]
-    #[arg(long, value_name = "DIR")]
-    pub dir: Option<PathBuf>,
-    /// Compare the first N steps only [default: every recorded step]
-    #[arg(long, value_name = "N")]
-    pub steps: Option<u64>,
-    /// Print the command line that reruns the recording (after writing its input files) and stop
-    #[arg(long)]
-    pub print: bool,
-    /// Worker threads (0: one per core); the results do not depend on it
-    #[arg(long, default_value_t = 0)]
-    pub threads: usize,
-}
 
 /// Reruns the recording and reports whether it reproduces.
 pub fn run_reproduce(args: &ReproduceArgs) -> ExitCode {
@@ -86,7 +62,8 @@ fn reproduce(args: &ReproduceArgs) -> anyhow::Result<bool> {
         );
         return Ok(true);
     }
-    let config = super::case_config(&argv)
+    let config = CommandLineCases
+        .config(&argv)
         .map_err(|e| anyhow::anyhow!("the recorded run cannot be made here: {e}"))?;
     let wanted = args.steps.map_or(recorded.steps.len(), |n| {
         (n as usize).min(recorded.steps.len())
