@@ -96,6 +96,8 @@ fn a_recording_names_its_run_and_reproduces_elsewhere_from_itself_alone() {
         "{info}"
     );
     assert!(info.contains("\nReport:\nplatefall free"), "{info}");
+    let outcome = format!("\nstatus completed: {n} steps to t = 0.400 ");
+    assert!(info.contains(&outcome), "{info}");
 
     let (code, out, err) = platefall_in(&elsewhere, &["reproduce", rrd, "--dir", "inputs"]);
     assert_eq!(code, 0, "{out}{err}");
@@ -217,4 +219,48 @@ fn truncated_and_foreign_files_get_one_line_and_exit_2() {
             );
         }
     }
+}
+
+#[test]
+fn the_printed_command_line_remakes_the_recorded_csv_byte_for_byte() {
+    let made = temp_dir("reproduce-csv-made");
+    let run = [
+        "static",
+        "--resolution",
+        "16",
+        "--t-end",
+        "0.5",
+        "--save",
+        "s.rrd",
+        "--csv",
+        "s.csv",
+        "--progress",
+        "off",
+    ];
+    let (code, _, err) = platefall_in(&made, &run);
+    assert_eq!(code, 0, "{err}");
+    let rrd = made.join("s.rrd");
+    let rrd = rrd.to_str().unwrap();
+
+    let elsewhere = temp_dir("reproduce-csv-elsewhere");
+    let (code, out, err) = platefall_in(&elsewhere, &["reproduce", rrd]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.starts_with("identical: "), "{out}");
+    let (code, line, err) = platefall_in(&elsewhere, &["reproduce", rrd, "--print"]);
+    assert_eq!(code, 0, "{err}");
+    // The line as a shell reads it, with this build's binary for `platefall`.
+    let rest = line.trim().strip_prefix("platefall ").expect("names the program");
+    let remake = Command::new("sh")
+        .current_dir(&elsewhere)
+        .arg("-c")
+        .arg(format!("exec \"$PLATEFALL\" {rest}"))
+        .env("PLATEFALL", env!("CARGO_BIN_EXE_platefall"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&remake.stderr);
+    assert!(remake.status.success(), "{err}");
+    let recorded = std::fs::read(made.join("s.csv")).unwrap();
+    let remade = std::fs::read(elsewhere.join("s.csv")).unwrap();
+    assert!(recorded.len() > 1000, "{} bytes", recorded.len());
+    assert!(recorded == remade, "the remade CSV differs from the recorded run's");
 }
