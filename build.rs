@@ -70,7 +70,11 @@ fn from_archive(root: &Path) -> Option<String> {
 
 /// A git command's trimmed output, run in `root`, if it succeeds.
 fn git(root: &Path, args: &[&str]) -> Option<String> {
-    let out = Command::new("git").current_dir(root).args(args).output().ok()?;
+    let out = Command::new("git")
+        .current_dir(root)
+        .args(args)
+        .output()
+        .ok()?;
     out.status
         .success()
         .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())

@@ -249,7 +249,10 @@ fn the_printed_command_line_remakes_the_recorded_csv_byte_for_byte() {
     let (code, line, err) = platefall_in(&elsewhere, &["reproduce", rrd, "--print"]);
     assert_eq!(code, 0, "{err}");
     // The line as a shell reads it, with this build's binary for `platefall`.
-    let rest = line.trim().strip_prefix("platefall ").expect("names the program");
+    let rest = line
+        .trim()
+        .strip_prefix("platefall ")
+        .expect("names the program");
     let remake = Command::new("sh")
         .current_dir(&elsewhere)
         .arg("-c")
@@ -262,5 +265,8 @@ fn the_printed_command_line_remakes_the_recorded_csv_byte_for_byte() {
     let recorded = std::fs::read(made.join("s.csv")).unwrap();
     let remade = std::fs::read(elsewhere.join("s.csv")).unwrap();
     assert!(recorded.len() > 1000, "{} bytes", recorded.len());
-    assert!(recorded == remade, "the remade CSV differs from the recorded run's");
+    assert!(
+        recorded == remade,
+        "the remade CSV differs from the recorded run's"
+    );
 }

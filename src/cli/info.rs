@@ -7,8 +7,8 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::shell::shell_line;
-use crate::version::program_and_commit;
 use crate::exit::Exit;
+use crate::version::program_and_commit;
 use platefall_record::recorded::Recorded;
 use platefall_record::viewer::read_recording;
 

@@ -8,13 +8,13 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use anyhow::Context as _;
 use super::reproduce_args::ReproduceArgs;
 use super::shell::shell_line;
 use super::sweep_cases::CommandLineCases;
+use crate::exit::Exit;
 use crate::sweep::CaseCommands as _;
 use crate::version::program_and_commit;
-use crate::exit::Exit;
+use anyhow::Context as _;
 use platefall_core::sim::{FieldSnapshot, History, Observer, Simulation, StepSample};
 use platefall_record::provenance::Invocation;
 use platefall_record::recorded::{RecordedStep, RECORDED_SERIES};

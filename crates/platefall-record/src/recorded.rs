@@ -26,7 +26,7 @@ pub struct RecordedStep {
     /// Its time in c/U (as the recording's `time` timeline holds it: to the nanosecond).
     pub t: f64,
     /// The values of [`RECORDED_SERIES`], exactly as the run computed them.
-    pub values: [f64; 8],
+    pub values: [f64; RECORDED_SERIES.len()],
 }
 
 impl RecordedStep {

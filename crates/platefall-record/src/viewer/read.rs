@@ -11,7 +11,7 @@ use rerun::{StoreKind, TextDocument};
 
 use super::layout::{paths, SERIES, TIMELINE_STEP, TIMELINE_TIME};
 use crate::provenance::{RecordedInvocation, INVOCATION_FORMAT};
-use crate::recorded::{ReadError, Recorded, RecordedStep};
+use crate::recorded::{ReadError, Recorded, RecordedStep, RECORDED_SERIES};
 
 /// The recording's data chunks (the blueprint's are left out), read to the end.
 fn chunks(path: &Path) -> Result<Vec<Chunk>, ReadError> {
@@ -66,7 +66,7 @@ fn document(chunks: &[Chunk], entity: &str) -> Option<String> {
 fn steps(chunks: &[Chunk]) -> Vec<RecordedStep> {
     let id = rerun::Scalars::descriptor_scalars().component;
     let mut rows: BTreeMap<i64, RecordedStep> = BTreeMap::new();
-    for (i, (entity, _, _)) in SERIES.iter().enumerate().take(8) {
+    for (i, (entity, _, _)) in SERIES.iter().enumerate().take(RECORDED_SERIES.len()) {
         for c in chunks
             .iter()
             .filter(|c| c.entity_path().to_string() == *entity)
@@ -78,7 +78,7 @@ fn steps(chunks: &[Chunk]) -> Vec<RecordedStep> {
                 let row = rows.entry(s.as_i64()).or_insert(RecordedStep {
                     step: s.as_i64().max(0) as u64,
                     t: t.as_i64() as f64 * 1e-9,
-                    values: [f64::NAN; 8],
+                    values: [f64::NAN; RECORDED_SERIES.len()],
                 });
                 if let Some(v) = v.first() {
                     row.values[i] = v.0 .0;
