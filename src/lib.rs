@@ -20,4 +20,4 @@ mod bench3;
 mod exit;
 mod pool;
 mod sweep;
-mod version;
+pub mod version;

@@ -8,7 +8,9 @@ use super::args::{ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs};
 use super::bench_args::BenchArgs;
 use super::converge_args::ConvergeArgs;
 use super::ensemble_args::EnsembleArgs;
+use super::info::InfoArgs;
 use super::record_args::RecordArgs;
+use super::reproduce_args::ReproduceArgs;
 use super::resume_args::ResumeArgs;
 use super::sweep_args::SweepArgs;
 use crate::exit::Exit;
@@ -21,7 +23,7 @@ use crate::exit::Exit;
 #[derive(Parser, Debug)]
 #[command(
     name = "platefall",
-    version,
+    version = crate::version::VERSION,
     about,
     long_about,
     propagate_version = true,
@@ -64,6 +66,13 @@ pub enum Command {
     /// Ctrl-C), exactly as if it had not stopped; or extend a completed one (--t-end, --turns).
     #[command(after_help = Exit::help(false))]
     Resume(ResumeArgs),
+    /// What a recording is: the run's title, the program and commit that made it, its command
+    /// line, input files, steps, report and configuration (with --json also its summary JSON).
+    Info(InfoArgs),
+    /// Run a recording's run again from the recording alone (its arguments and input files) and
+    /// compare every recorded step with it bit for bit: "identical", or the first step, time and
+    /// quantity where they part, with both values.
+    Reproduce(ReproduceArgs),
 }
 
 impl Command {
@@ -79,7 +88,9 @@ impl Command {
             | Command::Sweep(_)
             | Command::Converge(_)
             | Command::Ensemble(_)
-            | Command::Resume(_) => None,
+            | Command::Resume(_)
+            | Command::Info(_)
+            | Command::Reproduce(_) => None,
         }
     }
 }

@@ -17,6 +17,8 @@ pub fn run_config(cmd: &Command) -> Result<ValidatedConfig, ArgError> {
         Command::Converge(_) => return Err(ArgError::NotACase("converge")),
         Command::Ensemble(_) => return Err(ArgError::NotACase("ensemble")),
         Command::Resume(_) => return Err(ArgError::NotACase("resume")),
+        Command::Info(_) => return Err(ArgError::NotACase("info")),
+        Command::Reproduce(_) => return Err(ArgError::NotACase("reproduce")),
     };
     if let Some((solver, _)) = cmd.case_args() {
         check_whole(Param::Threads, solver.threads, 0, 256)?;

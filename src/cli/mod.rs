@@ -5,7 +5,9 @@
 //!
 //! Files, each using only those after it: `command` (the grammar), `config` (a case's run),
 //! `run` (running it), `sweep_args` and `sweep_cases` (the sweep's options and what it needs to
-//! know of the case subcommands), `converge_args` (a refinement study's options), `ensemble_args` (an ensemble's), `bench_args`,
+//! know of the case subcommands), `converge_args` (a refinement study's options), `ensemble_args`
+//! (an ensemble's), `info` and `reproduce` (reading a recording back; `provenance`: what a run
+//! records of how it was started; `shell`: command lines quoted for the shell), `bench_args`,
 //! `args`, `plate_args` and `shape_args` (the case options: solver, plate, section),
 //! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
 mod args;
@@ -17,13 +19,18 @@ mod config;
 mod converge_args;
 mod ensemble_args;
 mod flags;
+mod info;
 mod limits;
 mod plate_args;
+mod provenance;
 mod record_args;
+mod reproduce;
+mod reproduce_args;
 mod resume;
 mod resume_args;
 mod run;
 mod shape_args;
+mod shell;
 mod signals;
 mod span_arg;
 mod sweep_args;
@@ -70,6 +77,8 @@ pub fn main() -> ExitCode {
         Command::Converge(args) => return sweep_cases::run_converge(args).into(),
         Command::Ensemble(args) => return ensemble_args::run_ensemble(args).into(),
         Command::Resume(args) => resume::run_resume(args),
+        Command::Info(args) => info::run_info(args),
+        Command::Reproduce(args) => return reproduce::run_reproduce(args),
         cmd => run::run_case(cmd),
     };
     match result {

@@ -16,10 +16,12 @@ use super::resume_args::ResumeArgs;
 use super::run::{command_line, execute, Started};
 use super::signals::Interrupts;
 use crate::exit::Exit;
+use crate::version::program_and_commit;
 use crate::version::program_version as version;
 use platefall_core::sim::{CaseKind, Simulation, ValidatedConfig};
 use platefall_record::checkpoint::{read_checkpoint, Checkpoint, ResumeInfo};
 use platefall_record::messages::RunInfo;
+use platefall_record::provenance::Invocation;
 use platefall_record::RecordOptions;
 
 /// Why a checkpoint cannot be resumed as asked (besides a bad file).
@@ -80,7 +82,9 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let every = given_every.or(info.every);
     info.every = every;
     let interrupts = Interrupts::install()?;
-    let run_info = RunInfo::new(&config, command_line(), version());
+    // (The continuation's own invocation: `platefall resume FILE`.)
+    let invocation = Invocation::of_this_process(program_and_commit(), Vec::new());
+    let run_info = RunInfo::new(&config, command_line(), version()).with_invocation(invocation);
     let t = ckpt.sim.flow.t;
     let (sim, history) = Simulation::restore(config, ckpt.sim)?;
     if sim.finished() {

@@ -71,7 +71,8 @@ pub fn run_case(cmd: &Command) -> anyhow::Result<Exit> {
         }
         None => None,
     };
-    let info = RunInfo::new(&p.config, command_line(), version());
+    let info = RunInfo::new(&p.config, command_line(), version())
+        .with_invocation(super::provenance::invocation(cmd));
     let started = Started {
         sim: Simulation::new(p.config)?,
         history: History::default(),
@@ -91,6 +92,7 @@ pub(super) fn execute(
     info: RunInfo,
     interrupts: &Interrupts,
 ) -> anyhow::Result<Exit> {
+    let invocation = info.invocation.clone();
     let mut logger = platefall_record::spawn_logger(r.opts.clone(), info)?;
     logger.resume_fields_at(r.sim.flow().t(), r.history.total_steps());
     let pool = crate::pool::pool(r.threads)?;
@@ -109,10 +111,8 @@ pub(super) fn execute(
         .then(|| r.checkpoints.as_ref().map(|c| c.path().to_path_buf()))
         .flatten();
     let summary = summarize(r.sim.config(), &rec, wall_seconds);
-    let text = report(r.sim.config(), &summary);
-    // (Cannot fail for a plain struct; never leave the logger unfinished over it.)
-    let summary_json = serde_json::to_string_pretty(&summary)
-        .unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"));
+    let text = super::provenance::with_version(&report(r.sim.config(), &summary), &invocation);
+    let summary_json = super::provenance::summary_json(&invocation, &summary);
     let (log_report, mut failures) = finish_logger(logger, &rec.status, &summary_json, &text);
     failures.extend(ckpt_failure);
     if let Some(path) = &r.summary_path {
@@ -406,16 +406,5 @@ fn checkpoint_path(
 
 /// The command line as typed, quoted where needed.
 pub(super) fn command_line() -> String {
-    std::env::args()
-        .map(|a| {
-            if a.chars()
-                .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+".contains(c))
-            {
-                a
-            } else {
-                format!("'{}'", a.replace('\'', "'\\''"))
-            }
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
+    super::shell::shell_line(std::env::args())
 }

@@ -75,6 +75,7 @@ pub fn run_info_until(grid: GridGeometry, t_end: Option<f64>) -> RunInfo {
         config_json: "{\n  \"case\": \"free\",\n  \"re\": 4770\n}".into(),
         command_line: "platefall free --synthetic".into(),
         version: "0.1.0-test".into(),
+        invocation: Default::default(),
         section: Arc::new(Shape::rect(0.0625).outline()),
         section_label: Shape::rect(0.0625).describe(),
         grid: Arc::new(grid),

@@ -112,6 +112,9 @@
 //! /polar/screen                   Transform3D scale (1, −1) for the α plots
 //! /run/config                     TextDocument (markdown): title, version, command line, config JSON
 //! /run/summary                    TextDocument: outcome, report, summary JSON, skipped snapshots
+//! /run/invocation                 TextDocument (JSON): version and commit, arguments, directory,
+//!                                 input files, case, title, configuration (`provenance`)
+//! /run/summary_json, /run/report  TextDocument: the summary JSON and the report, at the end
 //! /run/status                     TextLog: started / skipped-snapshot warnings / completed,
 //!                                 diverged or interrupted
 //! /run/skipped_fields             Scalars at every field snapshot: snapshots skipped so far
@@ -156,6 +159,8 @@ pub mod messages;
 pub mod options;
 pub mod output;
 mod progress;
+pub mod provenance;
+pub mod recorded;
 pub mod view_options;
 #[cfg(feature = "viewer")]
 pub mod viewer;

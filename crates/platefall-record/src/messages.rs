@@ -9,6 +9,8 @@ use platefall_core::shape::Outline;
 use platefall_core::sim::{CaseKind, FieldSnapshot, RunStatus, StepSample, ValidatedConfig};
 use platefall_post::ViewDefaults;
 
+use crate::provenance::Invocation;
+
 /// Everything about a run that does not change while it runs; given when the logger starts.
 #[derive(Clone, Debug)]
 pub struct RunInfo {
@@ -20,8 +22,10 @@ pub struct RunInfo {
     pub config_json: String,
     /// The command line as typed (argv joined with shell quoting).
     pub command_line: String,
-    /// Program version (`CARGO_PKG_VERSION` plus git describe when known).
+    /// The program, its version and the commit it is built from.
     pub version: String,
+    /// How the run was started (arguments, directory, input files), for the recording.
+    pub invocation: Invocation,
     /// The plate's section in body coordinates (chord = 1), as the flow sees it.
     pub section: Arc<Outline>,
     /// The section in words, e.g. "rectangle t/c = 0.015625".
@@ -45,6 +49,10 @@ impl RunInfo {
             // (Cannot fail for plain data.)
             config_json: serde_json::to_string_pretty(config).unwrap_or_default(),
             command_line,
+            invocation: Invocation {
+                version: version.clone(),
+                ..Invocation::default()
+            },
             version,
             section: Arc::new(config.grid.shape.outline()),
             section_label: config.grid.shape.describe(),
@@ -53,6 +61,15 @@ impl RunInfo {
             // A run that stops after a number of turns has no known end time: show no ETA rather
             // than a wrong one.
             t_end: config.time.turns.is_none().then_some(config.time.t_end),
+        }
+    }
+
+    /// The same, started as `invocation` says (its version replaces [`RunInfo::version`]).
+    pub fn with_invocation(self, invocation: Invocation) -> RunInfo {
+        RunInfo {
+            version: invocation.version.clone(),
+            invocation,
+            ..self
         }
     }
 }

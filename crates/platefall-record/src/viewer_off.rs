@@ -9,6 +9,13 @@ use super::output::OutputError;
 use platefall_core::sim::{FieldSnapshot, StepSample};
 use platefall_post::phase::DiagramData;
 
+/// Recordings cannot be read in this build.
+pub fn read_recording(
+    _path: &Path,
+) -> Result<crate::recorded::Recorded, crate::recorded::ReadError> {
+    Err(crate::recorded::ReadError::NoViewer)
+}
+
 /// This build cannot record for Rerun.
 pub const AVAILABLE: bool = false;
 

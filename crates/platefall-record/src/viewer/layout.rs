@@ -59,6 +59,12 @@ pub mod paths {
     pub const CONFIG: &str = "/run/config";
     /// TextDocument: the outcome, the end-of-run report and the summary JSON.
     pub const SUMMARY: &str = "/run/summary";
+    /// How the run was started, as JSON (`provenance::RecordedInvocation`; static).
+    pub const INVOCATION: &str = "/run/invocation";
+    /// The summary JSON, as `--summary` writes it (static, logged at the end).
+    pub const SUMMARY_JSON: &str = "/run/summary_json";
+    /// The end-of-run report as plain text (static, logged at the end).
+    pub const REPORT: &str = "/run/report";
     /// TextLog: started, skipped-snapshot warnings, and how the run ended.
     pub const STATUS: &str = "/run/status";
     /// Scalars at every field snapshot: the snapshots skipped so far.
@@ -90,17 +96,9 @@ pub(super) const SERIES: [(&str, &str, u32); 9] = [
     (paths::SKIPPED_FIELDS, "skipped field snapshots", 0xE8574CFF),
 ];
 
+/// The value of the per-step series `i` of [`SERIES`] (0 to 7) at step `s`.
 pub(super) fn series_value(i: usize, s: &StepSample) -> f64 {
-    match i {
-        0 => s.cl,
-        1 => s.cd,
-        2 => s.cm,
-        3 => s.speed,
-        4 => s.omega,
-        5 => s.gamma,
-        6 => s.alpha,
-        _ => s.dt,
-    }
+    crate::recorded::RecordedStep::of(s).values[i.min(7)]
 }
 
 /// Largest batch of steps sent as one set of columns.

@@ -372,6 +372,14 @@ impl Scene {
             paths::SUMMARY,
             &document(summary_markdown(outcome, &line, stats_md)),
         )?;
+        self.rec.log_static(
+            paths::SUMMARY_JSON,
+            &rerun::TextDocument::new(outcome.summary_json.as_str()),
+        )?;
+        self.rec.log_static(
+            paths::REPORT,
+            &rerun::TextDocument::new(outcome.report.as_str()),
+        )?;
         Ok(())
     }
 }

@@ -3,13 +3,13 @@
 use rerun::components::{MagnificationFilter, Radius};
 use rerun::{
     Color, DepthImage, LineStrips2D, RecordingStream, RecordingStreamResult, SeriesLines,
-    Transform3D,
+    TextDocument, Transform3D,
 };
 
 use super::layout::{paths, FIELD_SCALES, SERIES};
 use super::polar::polar_axes;
 use super::section::SectionDrawing;
-use super::text::{config_markdown, document};
+use super::text::{config_markdown, document, invocation_json};
 use crate::messages::RunInfo;
 use crate::options::RecordOptions;
 use platefall_post::{FieldWindow, ImageGrid};
@@ -41,6 +41,7 @@ pub(super) fn log_static(
         paths::CONFIG,
         &document(config_markdown(info, opts, img, wake)),
     )?;
+    rec.log_static(paths::INVOCATION, &TextDocument::new(invocation_json(info)))?;
     rec.log_static(
         paths::SUMMARY,
         &document("# Summary\n\nThe run is in progress; the summary appears here when it ends."),

@@ -1,6 +1,7 @@
 //! The recording's text documents: the run configuration and the end-of-run summary.
 use crate::messages::{RunInfo, RunOutcome};
 use crate::options::RecordOptions;
+use crate::provenance::RecordedInvocation;
 use platefall_post::ImageGrid;
 use rerun::TextDocument;
 
@@ -89,6 +90,19 @@ pub(super) fn config_markdown(
     )
 }
 
+/// The invocation document (`provenance::RecordedInvocation` as pretty JSON).
+pub(super) fn invocation_json(info: &RunInfo) -> String {
+    let recorded = RecordedInvocation {
+        invocation: info.invocation.clone(),
+        case: info.case.to_string(),
+        title: info.title.clone(),
+        config: serde_json::from_str(&info.config_json).unwrap_or_default(),
+    };
+    // (Cannot fail for plain data.)
+    serde_json::to_string_pretty(&recorded).unwrap_or_default()
+}
+
+/// The summary document: the status line, the statistics, the report and the summary JSON.
 pub(super) fn summary_markdown(outcome: &RunOutcome, status: &str, stats_md: &str) -> String {
     format!(
         "# Summary: {status}\n\n{stats_md}\n\n## Report\n\n{report}\n## Summary JSON\n\n{json}",
