@@ -265,11 +265,19 @@ mod tests {
             if compare.should_stop() {
                 break;
             }
-            let mut sample = StepSample::default();
-            sample.step = s.step;
-            sample.t = s.t;
-            [sample.cl, sample.cd, sample.cm, sample.speed] = [s.values[0], 1.0, 0.0, 1.0];
-            [sample.omega, sample.gamma, sample.alpha, sample.dt] = [0.5, -0.3, 0.2, 0.01];
+            let sample = StepSample {
+                step: s.step,
+                t: s.t,
+                cl: s.values[0],
+                cd: 1.0,
+                cm: 0.0,
+                speed: 1.0,
+                omega: 0.5,
+                gamma: -0.3,
+                alpha: 0.2,
+                dt: 0.01,
+                ..StepSample::default()
+            };
             compare.step(&sample);
         }
         let verdict = compare.verdict();

@@ -2,7 +2,7 @@
 //! spun-up state, each perturbed a little) and its 95 % confidence interval. Pure functions on
 //! numbers; the command that runs the members is the binary's.
 //!
-//! - **Pooling** ([`pool`]): the members' means m_i are M independent observations of the same
+//! - **Pooling** ([`mod@pool`]): the members' means m_i are M independent observations of the same
 //!   mean, so the ensemble mean is their plain average m̄ and its interval is Student's
 //!   t(0.975; M − 1) · s/√M with s the between-member standard deviation: this holds whatever
 //!   each member's own correlation structure, as long as the members are independent. When the
@@ -14,7 +14,7 @@
 //!   intervals allow are not independent (the F test's lower tail: started without a
 //!   perturbation, or averaged before they parted); the decorrelation time of the members, from
 //!   their separation, says from when on their windows may be averaged.
-//! - **Separation** ([`separation`]): whether two ensembles' means differ by more than their
+//! - **Separation** ([`mod@separation`]): whether two ensembles' means differ by more than their
 //!   noise (Welch's t).
 //! - **Planning** ([`plan`]): the members, or a single run's length, needed for a requested
 //!   half-width, from a pilot's measured spread or interval.

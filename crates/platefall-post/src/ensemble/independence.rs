@@ -2,7 +2,7 @@
 //! measured from their separation.
 //!
 //! At each common time t_k the members' values x_i(t_k) have a between-member variance s²_k;
-//! for exchangeable members of variance σ², E[s²_k] = σ² (1 − ρ_k), where ρ_k is the correlation
+//! for exchangeable members of variance σ², E\[s²_k\] = σ² (1 − ρ_k), where ρ_k is the correlation
 //! between two members at that time. Members just branched have ρ ≈ 1; independent ones ρ = 0.
 //! σ² is the variance of all members' values over the second half of the series (the motion's
 //! own variance, once they have parted), ρ_k = 1 − s²_k/σ² is smoothed by a centred running mean,
