@@ -89,7 +89,7 @@ pub fn run_stopped(dir: &Path, case: &[&str], every: &str, stops: &[u64], thread
 }
 
 /// The uninterrupted and the resumed run wrote the same CSV, byte for byte, and the same
-/// summary but for the wall time.
+/// summary but for the wall time and the arguments.
 pub fn assert_same_outputs(dir: &Path) {
     let (a, b) = (read(dir, "full.csv"), read(dir, "cut.csv"));
     assert!(
@@ -106,9 +106,12 @@ pub fn read(dir: &Path, name: &str) -> Vec<u8> {
     std::fs::read(dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"))
 }
 
-/// A summary without its wall time.
+/// A summary without its wall time and the arguments that started it (a resumed run's are
+/// `resume …`).
 pub fn summary(dir: &Path, name: &str) -> serde_json::Value {
     let mut v: serde_json::Value = serde_json::from_slice(&read(dir, name)).unwrap();
-    v.as_object_mut().unwrap().remove("wall_seconds");
+    let obj = v.as_object_mut().unwrap();
+    obj.remove("wall_seconds");
+    assert!(obj.remove("args").is_some(), "{name} records no arguments");
     v
 }
