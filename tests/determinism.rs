@@ -1,5 +1,5 @@
 //! The same command twice gives a byte-identical CSV and the same summary apart from the wall
-//! time (the solver reads no clock, every parallel sum is taken in a fixed order, and the logger
+//! time and the arguments, which name the two runs' own output files (the solver reads no clock, every parallel sum is taken in a fixed order, and the logger
 //! never feeds back into it), and so do one worker thread and two.
 use std::path::Path;
 use std::process::Command;
@@ -45,6 +45,7 @@ fn summary_without_wall_time(path: &Path) -> serde_json::Value {
         serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let obj = v.as_object_mut().unwrap();
     assert!(obj.remove("wall_seconds").is_some());
+    assert!(obj.remove("args").is_some());
     v
 }
 
