@@ -114,15 +114,8 @@ fn bad_branches_are_refused_in_one_line() {
         (&["--perturb-omega", "inf"][..], "--perturb-omega inf"),
     ] {
         let out = branch(&dir, "bad", extra);
-        expect_code(&out, 2);
-        let err = String::from_utf8_lossy(&out.stderr);
-        let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
-        assert_eq!(lines.len(), 1, "one line: {err}");
-        assert!(
-            lines[0].starts_with("error: ") && lines[0].contains(what),
-            "{err}"
-        );
-        assert!(lines[0].contains("accepted a finite number"), "{err}");
+        let err = expect_one_line_error(&out, what);
+        assert!(err.contains("accepted a finite number"), "{err}");
     }
     assert!(!dir.join("bad.csv").exists());
     // Without --checkpoint the branch would write over the checkpoint it branches from.
@@ -136,22 +129,12 @@ fn bad_branches_are_refused_in_one_line() {
         "1e-3",
     ];
     let out = run(&dir, &args);
-    expect_code(&out, 2);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.trim().lines().count() == 1 && err.contains("give it its own --checkpoint"),
-        "{err}"
-    );
+    expect_one_line_error(&out, "give it its own --checkpoint");
     assert!(read(&dir, "branch.ckpt") == before);
     // 20 steps (t = 0.2) is before the release at t = 1: the hold would undo the perturbation.
     stopped(&dir, 20);
     let out = branch(&dir, "held", &["--perturb-omega", "1e-3"]);
-    expect_code(&out, 2);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.trim().lines().count() == 1 && err.contains("before the plate's release"),
-        "{err}"
-    );
+    expect_one_line_error(&out, "before the plate's release");
     assert!(!dir.join("held.csv").exists());
     // A static plate moves as prescribed: it has no θ̇ of its own.
     let args = [
@@ -174,11 +157,6 @@ fn bad_branches_are_refused_in_one_line() {
         "static",
         &["--perturb-omega", "1e-3", "--t-end", "0.4"],
     );
-    expect_code(&out, 2);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.trim().lines().count() == 1 && err.contains("moves as prescribed"),
-        "{err}"
-    );
+    expect_one_line_error(&out, "moves as prescribed");
     let _ = std::fs::remove_dir_all(&dir);
 }

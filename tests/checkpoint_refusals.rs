@@ -29,14 +29,7 @@ fn stopped_run(dir: &Path) {
 fn assert_refused(dir: &Path, file: &str, extra: &[&str], what: &str) {
     let (csv, json) = (read(dir, "cut.csv"), read(dir, "cut.json"));
     let out = run(dir, &[&["resume", file, "-q"], extra].concat());
-    expect_code(&out, 2);
-    let err = String::from_utf8_lossy(&out.stderr);
-    let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
-    assert_eq!(lines.len(), 1, "one line: {err}");
-    assert!(
-        lines[0].starts_with("error: ") && lines[0].contains(what),
-        "{err}"
-    );
+    expect_one_line_error(&out, what);
     assert!(
         read(dir, "cut.csv") == csv && read(dir, "cut.json") == json,
         "outputs untouched"

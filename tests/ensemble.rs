@@ -107,12 +107,7 @@ fn members_branch_are_pooled_and_resume() {
     assert_eq!(pooled(&dir)["quantities"]["mean_omega"], *w);
     // `platefall sweep collect` and `run-case` read a plan: they send the user back here.
     let out = run(&dir, &["sweep", "collect", "ens"]);
-    expect_code(&out, 2);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.trim().lines().count() == 1 && err.contains("was made by `platefall ensemble`"),
-        "{err}"
-    );
+    expect_one_line_error(&out, "was made by `platefall ensemble`");
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -139,14 +134,7 @@ fn bad_ensembles_are_refused_in_one_line_before_anything_runs() {
         ),
     ] {
         let out = ensemble(&dir, "bad", extra);
-        expect_code(&out, 2);
-        let err = String::from_utf8_lossy(&out.stderr);
-        let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
-        assert_eq!(lines.len(), 1, "one line: {err}");
-        assert!(
-            lines[0].starts_with("error: ") && lines[0].contains(what),
-            "{err}"
-        );
+        expect_one_line_error(&out, what);
         assert!(!dir.join("bad").exists(), "{what}: nothing runs");
     }
     let _ = std::fs::remove_dir_all(&dir);

@@ -34,6 +34,20 @@ pub fn expect_code(out: &Output, want: i32) {
     );
 }
 
+/// The run was refused as bad input: exit code 2 and one non-empty line on stderr, an
+/// `error: ` naming `what`. Returns that stderr.
+pub fn expect_one_line_error(out: &Output, what: &str) -> String {
+    expect_code(out, 2);
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    let lines: Vec<&str> = err.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 1, "one line: {err}");
+    assert!(
+        lines[0].starts_with("error: ") && lines[0].contains(what),
+        "{err}"
+    );
+    err
+}
+
 /// The case's outputs under `name` in `dir`: --csv NAME.csv --summary NAME.json --no-save -q.
 pub fn outputs(name: &str) -> Vec<String> {
     [

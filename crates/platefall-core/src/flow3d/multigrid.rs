@@ -8,7 +8,7 @@
 //! result (a warm start) in the rare case that round-off leaves it above the tolerance.
 use crate::poisson3::{FaceCoefs3, Poisson3, PoissonError};
 
-use super::project::{flat, PoissonOperator, PoissonSolve, SolveStats, Stop};
+use super::project::{flat, weighted_residual, PoissonOperator, PoissonSolve, SolveStats, Stop};
 
 /// Relative tolerances below this are not asked of [`Poisson3`] (round-off floor of its residual).
 const REL_FLOOR: f64 = 1e-14;
@@ -45,13 +45,7 @@ impl MultigridCg {
 
     /// r = b − A p and the largest |r_P| w_P.
     fn weighted_residual(&mut self, b: &[f64], p: &[f64], weight: &[f64]) -> f64 {
-        self.op.apply(p, &mut self.r);
-        let mut worst: f64 = 0.0;
-        for ((r, &b), &w) in self.r.iter_mut().zip(b).zip(weight) {
-            *r = b - *r;
-            worst = worst.max(r.abs() * w);
-        }
-        worst
+        weighted_residual(&self.op, b, p, weight, &mut self.r)
     }
 }
 
@@ -92,10 +86,11 @@ impl PoissonSolve for MultigridCg {
 fn face_coefs(op: &PoissonOperator) -> FaceCoefs3 {
     let [nx, ny, nz] = op.n;
     let (x_faces, y_faces) = ((nx + 1) * ny * nz, nx * (ny + 1) * nz);
+    let [dx, dy, dz] = op.widths.clone();
     let mut f = FaceCoefs3 {
-        dx: vec![1.0; nx],
-        dy: vec![1.0; ny],
-        dz: vec![1.0; nz],
+        dx,
+        dy,
+        dz,
         periodic_z: op.periodic_z,
         cx: vec![0.0; x_faces],
         cy: vec![0.0; y_faces],
@@ -120,8 +115,5 @@ fn face_coefs(op: &PoissonOperator) -> FaceCoefs3 {
             }
         }
     }
-    f.dx = op.widths[0].clone();
-    f.dy = op.widths[1].clone();
-    f.dz = op.widths[2].clone();
     f
 }

@@ -227,13 +227,7 @@ impl JacobiCg {
 
     /// r = b − A p and the largest weighted residual.
     fn residual(&mut self, b: &[f64], p: &[f64], weight: &[f64]) -> f64 {
-        self.op.apply(p, &mut self.r);
-        let mut worst: f64 = 0.0;
-        for ((r, &b), &w) in self.r.iter_mut().zip(b).zip(weight) {
-            *r = b - *r;
-            worst = worst.max(r.abs() * w);
-        }
-        worst
+        weighted_residual(&self.op, b, p, weight, &mut self.r)
     }
 }
 
@@ -292,6 +286,24 @@ impl JacobiCg {
             *z = r * m;
         }
     }
+}
+
+/// r = b − A p into `r`, and the largest |r_P| w_P: the divergence the correction leaves when
+/// w = Δt / V (the stopping test of every [`PoissonSolve`]).
+pub(super) fn weighted_residual(
+    op: &PoissonOperator,
+    b: &[f64],
+    p: &[f64],
+    weight: &[f64],
+    r: &mut [f64],
+) -> f64 {
+    op.apply(p, r);
+    let mut worst: f64 = 0.0;
+    for ((r, &b), &w) in r.iter_mut().zip(b).zip(weight) {
+        *r = b - *r;
+        worst = worst.max(r.abs() * w);
+    }
+    worst
 }
 
 /// Net outflow Σ A u·n of every cell (zero in solid cells), into `div`.

@@ -219,12 +219,8 @@ impl Poisson3 {
         })
     }
 
-    /// Preconditioned conjugate gradients from the residual in `r`; returns the iterations.
-    fn iterate(&mut self, x: &mut [f64], norm_b: f64, tol: f64) -> Result<usize, PoissonError> {
-        let mut rel = self.planes.dot(&self.r, &self.r).sqrt() / norm_b;
-        if rel <= tol {
-            return Ok(0);
-        }
+    /// z = M r for the solver's own residual `r`.
+    fn precondition_residual(&mut self) {
         cycle(
             &self.levels,
             &self.transfers,
@@ -233,6 +229,15 @@ impl Poisson3 {
             &self.r,
             &mut self.z,
         );
+    }
+
+    /// Preconditioned conjugate gradients from the residual in `r`; returns the iterations.
+    fn iterate(&mut self, x: &mut [f64], norm_b: f64, tol: f64) -> Result<usize, PoissonError> {
+        let mut rel = self.planes.dot(&self.r, &self.r).sqrt() / norm_b;
+        if rel <= tol {
+            return Ok(0);
+        }
+        self.precondition_residual();
         self.p.copy_from_slice(&self.z);
         let mut rz = self.planes.dot(&self.r, &self.z);
         for iterations in 1..=MAX_ITERATIONS {
@@ -252,14 +257,7 @@ impl Poisson3 {
             if rel <= tol {
                 return Ok(iterations);
             }
-            cycle(
-                &self.levels,
-                &self.transfers,
-                &mut self.work,
-                &mut self.coarsest,
-                &self.r,
-                &mut self.z,
-            );
+            self.precondition_residual();
             let rz_next = self.planes.dot(&self.r, &self.z);
             self.planes.xpby(&self.z, rz_next / rz, &mut self.p);
             rz = rz_next;
