@@ -20,12 +20,13 @@
 //! `momentum.rs` (the right-hand side), `boundary.rs` (outer boundary), `plate.rs` (no slip and
 //! the near-wall viscous stencils), `project.rs` (pressure operator, Jacobi CG, correction),
 //! `multigrid.rs` (the default pressure solver, `poisson3` behind the same boundary),
-//! `loads.rs` (forces and moments), `coefficients.rs` (lift, drag, side force and the three
+//! `loads.rs` (forces and moments), `added_mass.rs` (the 6 × 6 added-mass matrix K), `coefficients.rs` (lift, drag, side force and the three
 //! moments), `error.rs` and `params.rs`, `solver.rs` ([`FlowSolver3`]).
 //!
 //! The step allocates nothing after [`FlowSolver3::new`]; the right-hand side and the pressure
 //! solver's sweeps run in parallel over z-planes (rayon), with every reduction in a fixed order,
 //! so the result does not depend on the number of threads.
+mod added_mass;
 mod boundary;
 mod coefficients;
 mod error;
@@ -41,6 +42,7 @@ mod plate;
 mod project;
 mod solver;
 
+pub use added_mass::AddedMass3;
 pub use boundary::{OuterBc3, VelocityFn3};
 pub use coefficients::Coefficients3;
 pub use error::{Flow3Error, BLOWUP_FACTOR};

@@ -64,9 +64,12 @@ impl PoissonSolve for MultigridCg {
             }
             match self.solver.solve(b, p, rel) {
                 Ok(s) => stats.iterations += s.iterations,
-                Err(PoissonError::NotConverged { iterations, .. }) => {
-                    stats.iterations += iterations;
-                }
+                // Both leave the last iterate in p: a breakdown at round-off (pᵀAp ≤ 0 with a
+                // residual near the floor) is judged, like a stall, by the divergence left.
+                Err(
+                    PoissonError::NotConverged { iterations, .. }
+                    | PoissonError::Breakdown { iterations, .. },
+                ) => stats.iterations += iterations,
                 Err(_) => break,
             }
             stats.divergence = self.weighted_residual(b, p, stop.weight);

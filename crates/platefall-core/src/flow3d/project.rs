@@ -306,6 +306,30 @@ pub(super) fn weighted_residual(
     worst
 }
 
+/// The pressure equation's right-hand side from the cells' net outflows in `rhs` (in place):
+/// b = −outflow / Δt with its mean over the fluid cells removed (the all-Neumann equation's
+/// compatibility), zero in solid cells; and the divergence weights Δt / V of [`Stop`].
+pub(super) fn pressure_rhs(op: &PoissonOperator, dt: f64, rhs: &mut [f64], weight: &mut [f64]) {
+    let (mut sum, mut count) = (0.0, 0usize);
+    for (k, b) in rhs.iter_mut().enumerate() {
+        *b *= -1.0 / dt;
+        if op.diag[k] > 0.0 {
+            sum += *b;
+            count += 1;
+        }
+    }
+    let mean = if count > 0 { sum / count as f64 } else { 0.0 };
+    for ((b, w), (&d, &v)) in rhs
+        .iter_mut()
+        .zip(weight.iter_mut())
+        .zip(op.diag.iter().zip(&op.volume))
+    {
+        let active = d > 0.0;
+        *b = if active { *b - mean } else { 0.0 };
+        *w = if active { dt / v } else { 0.0 };
+    }
+}
+
 /// Net outflow Σ A u·n of every cell (zero in solid cells), into `div`.
 pub fn cell_fluxes(
     vel: [&[f64]; 3],

@@ -1,6 +1,7 @@
 //! [`FlowSolver3`]: the fields on the body-fixed 3-D grid and one step of the mixed-frame
 //! equations (docs/physics.md §9), in the 2-D solver's order: begin_step → predict →
 //! impose_boundaries → project → end_step → update_loads.
+use super::added_mass::{AddedMass3, UnitResponses};
 use super::boundary::{Outer, OuterBc3};
 use super::coefficients::Coefficients3;
 use super::error::{Flow3Error, BLOWUP_FACTOR};
@@ -13,7 +14,9 @@ use super::momentum::{explicit_rhs, RhsContext, RhsStats};
 use super::multigrid::MultigridCg;
 use super::params::FlowParams3;
 use super::plate::Plate;
-use super::project::{cell_fluxes, correct, PoissonOperator, PoissonSolve, SolveStats, Stop};
+use super::project::{
+    cell_fluxes, correct, pressure_rhs, PoissonOperator, PoissonSolve, SolveStats, Stop,
+};
 use crate::flow::Ab2;
 
 /// The outer boundary's view of the solver's fields (a macro: the borrows stay per field).
@@ -229,25 +232,7 @@ impl FlowSolver3 {
         let vel = [&self.vel[0][..], &self.vel[1][..], &self.vel[2][..]];
         let op = self.pressure.operator();
         cell_fluxes(vel, &self.metrics, &self.layout, op, &mut self.rhs);
-        let (mut sum, mut count) = (0.0, 0usize);
-        for (k, b) in self.rhs.iter_mut().enumerate() {
-            *b *= -1.0 / dt;
-            if op.diag[k] > 0.0 {
-                sum += *b;
-                count += 1;
-            }
-        }
-        let mean = if count > 0 { sum / count as f64 } else { 0.0 };
-        for ((b, w), (&d, &v)) in self
-            .rhs
-            .iter_mut()
-            .zip(self.weight.iter_mut())
-            .zip(op.diag.iter().zip(&op.volume))
-        {
-            let active = d > 0.0;
-            *b = if active { *b - mean } else { 0.0 };
-            *w = if active { dt / v } else { 0.0 };
-        }
+        pressure_rhs(op, dt, &mut self.rhs, &mut self.weight);
         let stop = Stop {
             weight: &self.weight,
             tol: self.params.div_tol,
@@ -321,6 +306,23 @@ impl FlowSolver3 {
             self.rhs_stats.convective_rate,
             self.dt_visc,
         )
+    }
+
+    /// The flow's added-mass matrix K from six projections of the unit motions with this
+    /// solver's own operator and pressure solver (set-up cost only; the flow is not touched).
+    ///
+    /// # Errors
+    /// [`Flow3Error::PressureNotConverged`] when a solve does not reach the divergence tolerance.
+    pub fn added_mass(&mut self) -> Result<AddedMass3, Flow3Error> {
+        UnitResponses {
+            grid: &self.grid,
+            metrics: &self.metrics,
+            layout: &self.layout,
+            plate: &self.plate,
+            pressure: self.pressure.as_mut(),
+            max_iterations: self.params.max_iterations,
+        }
+        .added_mass()
     }
 
     /// Largest |∇·u| over the fluid cells.
