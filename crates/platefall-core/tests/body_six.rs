@@ -477,6 +477,7 @@ fn planar_strong_coupling_is_the_two_dimensional_one() {
     };
     for (dof, c) in [
         (Dof::Free, Constraint6::Free),
+        (Dof::Free, Constraint6::Planar),
         (Dof::PitchOnly, Constraint6::PinnedSpan),
     ] {
         let f = flat.derivative(&props, dof, &s2, rest, 0.0);
@@ -623,7 +624,19 @@ fn bad_input_gets_a_typed_error() {
         make(wobble, Constraint6::PinnedSpan),
         Err(SixError::PinnedSpin(_))
     ));
+    assert!(matches!(
+        make(wobble, Constraint6::Planar),
+        Err(SixError::PinnedSpin(_))
+    ));
     assert!(make(wobble, Constraint6::PinnedPoint).is_ok());
+    let sideways = State6 {
+        velocity: Vector3::new(1.0, 0.0, 0.2),
+        ..State6::at_rest()
+    };
+    assert_eq!(
+        make(sideways, Constraint6::Planar),
+        Err(SixError::PlanarVelocity(0.2))
+    );
     assert!(matches!(
         RigidBody6::new(
             plate,

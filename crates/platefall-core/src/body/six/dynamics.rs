@@ -39,18 +39,28 @@ pub enum Constraint6 {
     PinnedPoint,
     /// All six degrees of freedom, with gravity and buoyancy.
     Free,
+    /// Free flight in the X–Y plane, turning about the span only (ω = ω_z ẑ, the span along Z):
+    /// the centre moves in X–Y under the loads, gravity and buoyancy, and the constraint takes the
+    /// rest. A plate of periodic span flies so (it cannot roll), and the 2-D free fall is this
+    /// case of the six.
+    Planar,
 }
 
 impl Constraint6 {
-    /// Whether `state` is consistent with the constraint: pinned about the span, ω lies along
-    /// body z exactly.
+    /// Whether `state` is consistent with the constraint: pinned about the span or planar, ω
+    /// lies along body z exactly; planar, the centre does not move along Z.
     ///
     /// # Errors
-    /// [`SixError::PinnedSpin`] when pinned about the span and ω has an x or y component.
+    /// [`SixError::PinnedSpin`] when pinned about the span or planar and ω has an x or y
+    /// component; [`SixError::PlanarVelocity`] when planar and Ż₀ ≠ 0.
     pub fn check(&self, state: &State6) -> Result<(), SixError> {
         let w = state.omega;
-        if *self == Constraint6::PinnedSpan && (w.x != 0.0 || w.y != 0.0) {
+        let about_span = matches!(self, Constraint6::PinnedSpan | Constraint6::Planar);
+        if about_span && (w.x != 0.0 || w.y != 0.0) {
             return Err(SixError::PinnedSpin(w.into()));
+        }
+        if *self == Constraint6::Planar && state.velocity.z != 0.0 {
+            return Err(SixError::PlanarVelocity(state.velocity.z));
         }
         Ok(())
     }
@@ -59,7 +69,7 @@ impl Constraint6 {
 /// The body's accelerations under the loads taken as given (docs/physics.md §9, explicit
 /// coupling): `Free`: Ẍ₀ = R F/m* − g*(1 − m_f*/m*) Ŷ, ω̇ = I⁻¹(M − ω × Iω); `PinnedPoint`: Ẍ₀ = 0
 /// and the same ω̇; `PinnedSpan`: Ẍ₀ = 0, ω̇ = (0, 0, M_z/I_z) (ω × Iω has no z component for
-/// ω ∥ z); `Prescribed`: zero.
+/// ω ∥ z); `Planar`: `Free`'s Ẍ₀ without its Z component and `PinnedSpan`'s ω̇; `Prescribed`: zero.
 pub fn explicit_acceleration(
     plate: &Plate6,
     constraint: Constraint6,
@@ -87,5 +97,14 @@ pub fn explicit_acceleration(
             linear: linear(),
             angular: euler(),
         },
+        Constraint6::Planar => Accel6 {
+            linear: in_plane(linear()),
+            angular: Vector3::new(0.0, 0.0, loads.moment.z / i[(2, 2)]),
+        },
     }
+}
+
+/// v without its Z component (the planar constraint's reaction takes it).
+pub(super) fn in_plane(v: Vector3<f64>) -> Vector3<f64> {
+    Vector3::new(v.x, v.y, 0.0)
 }

@@ -33,6 +33,9 @@ pub enum SixError {
     /// The orientation quaternion is not of unit norm.
     #[error("the orientation quaternion must have unit norm (within 1e-12), got norm {0}")]
     Orientation(f64),
+    /// Planar, the centre moves along Z.
+    #[error("in planar flight the centre's velocity along Z must be 0, got {0}")]
+    PlanarVelocity(f64),
     /// Pinned about the span, the angular velocity has components off the span.
     #[error("pinned about the span, the angular velocity must lie along body z, got {0:?}")]
     PinnedSpin([f64; 3]),

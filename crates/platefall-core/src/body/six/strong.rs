@@ -15,12 +15,16 @@
 //!
 //! then Ẍ₀ = R A. For planar motion (ω = θ̇ ẑ) −ω × u₀ = (θ̇ v₀, −θ̇ u₀, 0), the 2-D form. Pinned
 //! about the centre (A = 0) the moment rows are solved with the 3 × 3 block I − K_MM; pinned about
-//! the span the z row alone. The left-hand side must be positive definite (its symmetric part), as
+//! the span the z row alone; planar (A_z = 0, ω ∥ z) the rows and columns of (u, v, ω_z). The left-hand side must be positive definite (its symmetric part), as
 //! it is for a physical K (negative semi-definite) and any m > 0 and positive-definite I.
 
 use nalgebra::{Matrix3, Matrix6, SymmetricEigen, Vector3, Vector6, LU, U3, U6};
 
+use super::dynamics::in_plane;
 use super::{Accel6, Constraint6, Loads6, Plate6, SixError, State6};
+
+/// The rows of (u, v, ω_z), the planar motion's, among the six.
+const PLANAR: [usize; 3] = [0, 1, 5];
 
 /// The body's equations with the added mass implicit (module docs).
 #[derive(Clone, Debug)]
@@ -29,6 +33,8 @@ pub struct StrongCoupling6 {
     lhs: Matrix6<f64>,
     full: LU<f64, U6, U6>,
     moments: LU<f64, U3, U3>,
+    /// Rows and columns (u, v, ω_z) of the left-hand side.
+    planar: LU<f64, U3, U3>,
 }
 
 impl StrongCoupling6 {
@@ -58,11 +64,13 @@ impl StrongCoupling6 {
             return Err(SixError::AddedMass(smallest));
         }
         let moments: Matrix3<f64> = lhs.fixed_view::<3, 3>(3, 3).into_owned();
+        let planar = Matrix3::from_fn(|r, c| lhs[(PLANAR[r], PLANAR[c])]);
         Ok(Self {
             k,
             lhs,
             full: lhs.lu(),
             moments: moments.lu(),
+            planar: planar.lu(),
         })
     }
 
@@ -101,6 +109,14 @@ impl StrongCoupling6 {
                 linear: Vector3::zeros(),
                 angular: solve_moments(moment),
             },
+            Constraint6::Planar => {
+                let rhs = Vector3::new(force.x, force.y, moment.z);
+                let x = self.planar.solve(&rhs).unwrap_or(rhs * f64::NAN);
+                Accel6 {
+                    linear: in_plane(s.to_inertial(&Vector3::new(x[0], x[1], 0.0))),
+                    angular: Vector3::new(0.0, 0.0, x[2]),
+                }
+            }
             Constraint6::Free => {
                 let rhs = Vector6::new(force.x, force.y, force.z, moment.x, moment.y, moment.z);
                 let x = self.full.solve(&rhs).unwrap_or(rhs * f64::NAN);
