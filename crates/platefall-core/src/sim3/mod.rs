@@ -1,12 +1,15 @@
-//! The three-dimensional flow around a plate in prescribed planar motion: the static and forced
-//! cases of docs/physics.md §1 (A, B) with a finite or periodic span (docs/three-d.md "Cases").
+//! The three-dimensional flow around a plate in prescribed planar motion — the static and
+//! forced cases of docs/physics.md §1 (A, B) with a finite or periodic span (docs/three-d.md
+//! "Cases") — and in flight (docs/three-d.md "Free flight").
 //!
 //! The plate moves exactly as in 2-D — the centre along +X at U, the pitch θ(t) about the span
 //! axis z ([`planar_frame`]) — and [`run_prescribed`] steps a [`crate::flow3d::FlowSolver3`]
-//! through it, handing each step's [`Sample3`] to an observer. Free flight in 3-D (six degrees of
-//! freedom) is not here yet.
+//! through it, handing each step's [`Sample3`] to an observer. [`Flight3`] flies a plate with six
+//! degrees of freedom (or planar, or pinned) through the 3-D flow, strongly coupled.
+mod flight;
 mod planar;
 mod run;
 
+pub use flight::{frame_of, Flight3, Flight3Error, Sample6};
 pub use planar::planar_frame;
 pub use run::{run_prescribed, Sample3};
