@@ -9,7 +9,7 @@
 //! ([`FlowSolver3::added_mass`]).
 use nalgebra::{Rotation3, Vector3};
 
-use crate::body::six::{Loads6, RigidBody6, SixError, State6, StrongCoupling6};
+use crate::body::six::{Constraint6, Loads6, RigidBody6, SixError, State6, StrongCoupling6};
 use crate::flow3d::{AddedMass3, Coefficients3, Flow3Error, FlowSolver3, Frame3};
 
 /// Why a flight could not start or stopped.
@@ -68,6 +68,8 @@ pub struct Flight3 {
     /// The flow's frame one level back, and the step that left it.
     before: Frame3,
     dt_prev: f64,
+    /// While held: the release time and the constraint the body takes then.
+    release: Option<(f64, Constraint6)>,
 }
 
 impl Flight3 {
@@ -80,11 +82,15 @@ impl Flight3 {
     /// yaws, the flow's errors from computing K and [`SixError::AddedMass`] when
     /// diag(m, m, m) ⊕ I − K is not positive definite.
     pub fn new(mut flow: FlowSolver3, body: RigidBody6) -> Result<Flight3, Flight3Error> {
-        use crate::body::six::Constraint6::{Free, PinnedPoint};
         if *flow.frame() != frame_of(body.state()) {
             return Err(Flight3Error::FrameMismatch);
         }
-        if flow.grid().periodic_z && matches!(body.constraint(), Free | PinnedPoint) {
+        if flow.grid().periodic_z
+            && matches!(
+                body.constraint(),
+                Constraint6::Free | Constraint6::PinnedPoint
+            )
+        {
             return Err(Flight3Error::PeriodicNotPlanar);
         }
         let added = flow.added_mass()?;
@@ -97,33 +103,58 @@ impl Flight3 {
             coupling,
             added,
             dt_prev: 0.0,
+            release: None,
         })
+    }
+
+    /// Holds the body on a straight line at its velocity, without turning, until `t_release`
+    /// (the flow develops around it, as in the 2-D free fall, docs/physics.md §1 D), then lets it
+    /// go with its constraint.
+    ///
+    /// # Errors
+    /// [`Flow3Error::BadParameter`] when `t_release` is not finite and ≥ 0.
+    pub fn hold_until(mut self, t_release: f64) -> Result<Flight3, Flight3Error> {
+        if !(t_release.is_finite() && t_release >= 0.0) {
+            let e = Flow3Error::BadParameter {
+                name: "release time",
+                value: t_release,
+            };
+            return Err(e.into());
+        }
+        let constraint = self.body.constraint();
+        self.body.set_constraint(Constraint6::Prescribed)?;
+        self.release = Some((t_release, constraint));
+        Ok(self)
     }
 
     /// One coupled step of Δt = min(the flow's stable step, `dt_max`).
     ///
     /// # Errors
-    /// [`Flight3Error::MotionNotFinite`] when the body's new state is not finite, and the flow's
-    /// errors.
+    /// [`Flight3Error::MotionNotFinite`] when the body's new state is not finite, the body's
+    /// errors at the release, and the flow's errors.
     pub fn step(&mut self, dt_max: f64) -> Result<Sample6, Flight3Error> {
         let t = self.flow.t();
-        let dt = self.flow.stable_dt().min(dt_max);
+        let mut dt = self.flow.stable_dt().min(dt_max);
+        match self.release {
+            Some((t_release, constraint)) if t >= t_release - 1e-9 => {
+                self.body.set_constraint(constraint)?;
+                self.release = None;
+            }
+            Some((t_release, _)) => dt = dt.min(t_release - t),
+            None => {}
+        }
         if !(dt > 0.0 && dt.is_finite()) {
             return Err(Flow3Error::BadStep { dt }.into());
         }
-        let loads = self.flow.loads();
-        let inst = self
-            .added
-            .instantaneous(self.flow.frame(), &self.before, self.dt_prev);
-        let rest = Loads6 {
-            force: Vector3::from_fn(|i, _| loads.force[i] - inst[i]),
-            moment: Vector3::from_fn(|i, _| loads.moment[i] - inst[i + 3]),
-        };
-        let plate = *self.body.plate();
-        let accel =
-            self.coupling
-                .acceleration(&plate, self.body.constraint(), self.body.state(), &rest);
-        self.body.step_with(t, accel, dt);
+        if self.release.is_some() {
+            let s = *self.body.state();
+            self.body.impose(State6 {
+                position: s.position + s.velocity * dt,
+                ..s
+            })?;
+        } else {
+            self.fly(t, dt);
+        }
         if self.body.state().validate().is_err() {
             return Err(Flight3Error::MotionNotFinite { t: t + dt });
         }
@@ -140,6 +171,23 @@ impl Flight3 {
             iterations: stats.iterations,
             divergence: stats.divergence,
         })
+    }
+
+    /// The body's step t → t + dt under the flow's loads at t, strongly coupled.
+    fn fly(&mut self, t: f64, dt: f64) {
+        let loads = self.flow.loads();
+        let inst = self
+            .added
+            .instantaneous(self.flow.frame(), &self.before, self.dt_prev);
+        let rest = Loads6 {
+            force: Vector3::from_fn(|i, _| loads.force[i] - inst[i]),
+            moment: Vector3::from_fn(|i, _| loads.moment[i] - inst[i + 3]),
+        };
+        let plate = *self.body.plate();
+        let accel =
+            self.coupling
+                .acceleration(&plate, self.body.constraint(), self.body.state(), &rest);
+        self.body.step_with(t, accel, dt);
     }
 
     /// The flow.
