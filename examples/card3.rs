@@ -1,0 +1,216 @@
+//! The card of Gallaway (1985) flying in three dimensions (docs/three-d.md "The card in three
+//! dimensions"): chord 3 in, span 8 in, six degrees of freedom (or a periodic span flying
+//! planar), launched as the 2-D free fall (V₀ = 1 along γ₀ = −π/4 at α₀ = 0.1, held 5 c/U).
+//! Writes every step to a CSV and ends with the means over the whole turns after the first
+//! complete one, with 95 % batch-means intervals (docs/statistics.md), beside the experiment.
+//!
+//! `cargo run --release --example card3 -- N T_END finite|periodic OUT.csv`
+use std::f64::consts::TAU;
+use std::io::Write;
+
+use platefall_core::body::six::{Constraint6, PhysicalPlate6, RigidBody6};
+use platefall_core::body::AbStart;
+use platefall_core::flow3d::{
+    FlowParams3, FlowSolver3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
+};
+use platefall_core::sim3::{frame_of, Flight3, Sample6};
+use platefall_post::stats::batch_interval;
+
+/// Release time (c/U): the plate is held on its launch path while the flow develops.
+const T_RELEASE: f64 = 5.0;
+
+/// One step's motion, as the analysis needs it.
+struct Row {
+    t: f64,
+    dt: f64,
+    pitch: f64,
+    rate: f64,
+    velocity: [f64; 3],
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let n: usize = args.first().map_or(Ok(16), |a| a.parse())?;
+    let t_end: f64 = args.get(1).map_or(Ok(40.0), |a| a.parse())?;
+    let periodic = args.get(2).is_some_and(|a| a == "periodic");
+    let out = args.get(3).map_or("card3.csv", String::as_str);
+    let card = PhysicalPlate6::card();
+    let b = card.aspect_ratio();
+    let (span, constraint) = if periodic {
+        (Span::Periodic(b), Constraint6::Planar)
+    } else {
+        (Span::Finite(b), Constraint6::Free)
+    };
+    let start = PhysicalPlate6::card_release();
+    let grid = Grid3::new(&GridSpec3 {
+        resolution: n,
+        thickness: 1.0 / 16.0,
+        span,
+        extent: [8.0; 3],
+        stretch: Stretch3::GrowthCap(1.2),
+        memory_limit: 8e9,
+    })?;
+    eprintln!("cells {}", grid.cells());
+    let params = FlowParams3 {
+        re: card.reynolds(),
+        ..FlowParams3::default()
+    };
+    let flow = FlowSolver3::new(grid, params, OuterBc3::FarField, frame_of(&start))?;
+    let body = RigidBody6::new(card.nondimensional()?, constraint, start, 2, AbStart::Ramp)?;
+    let mut flight = Flight3::new(flow, body)?.hold_until(T_RELEASE)?;
+    let mut csv = std::io::BufWriter::new(std::fs::File::create(out)?);
+    writeln!(csv, "step,t,dt,x,y,z,vx,vy,vz,roll,yaw,pitch,omega_x,omega_y,omega_z,span_y,cl,cd,cs,c_roll,c_yaw,c_pitch,iterations,divergence")?;
+    let clock = std::time::Instant::now();
+    let mut rows = Vec::new();
+    let mut pitch = 0.0_f64;
+    let mut next_print = 0.0;
+    while flight.flow().t() < t_end - 1e-9 {
+        let s = flight.step(0.01)?;
+        pitch = unwrap(pitch, s.state.orientation.euler_angles().2);
+        write_row(&mut csv, &s, pitch)?;
+        let v = s.state.velocity;
+        rows.push(Row {
+            t: s.t,
+            dt: s.dt,
+            pitch,
+            rate: s.state.omega.z,
+            velocity: [v.x, v.y, v.z],
+        });
+        if s.t >= next_print - 1e-9 {
+            next_print += 1.0;
+            csv.flush()?;
+            eprintln!(
+                "t {:6.2}  wall {:6.0} s  pitch {pitch:+8.3}  θ̇ {:+.3}  V ({:+.3} {:+.3} {:+.4})  span_y {:+.4}  CG {}",
+                s.t,
+                clock.elapsed().as_secs_f64(),
+                s.state.omega.z,
+                v.x,
+                v.y,
+                v.z,
+                s.state.span_axis().y,
+                s.iterations
+            );
+        }
+    }
+    csv.flush()?;
+    println!(
+        "{} steps to t = {t_end} in {:.0} s",
+        rows.len(),
+        clock.elapsed().as_secs_f64()
+    );
+    report(&rows, U_OVER_C, card.speed);
+    Ok(())
+}
+
+/// The card's U/c (s⁻¹): 3 ft/s over 0.25 ft.
+const U_OVER_C: f64 = 12.0;
+
+/// The continuous angle nearest `previous` whose wrapped value is `wrapped`.
+fn unwrap(previous: f64, wrapped: f64) -> f64 {
+    previous + (wrapped - previous + std::f64::consts::PI).rem_euclid(TAU) - std::f64::consts::PI
+}
+
+fn write_row(csv: &mut impl Write, s: &Sample6, pitch: f64) -> std::io::Result<()> {
+    let (roll, yaw, _) = s.state.orientation.euler_angles();
+    let (p, v, w, c) = (
+        s.state.position,
+        s.state.velocity,
+        s.state.omega,
+        s.coefficients,
+    );
+    writeln!(
+        csv,
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+        s.step,
+        s.t,
+        s.dt,
+        p.x,
+        p.y,
+        p.z,
+        v.x,
+        v.y,
+        v.z,
+        roll,
+        yaw,
+        pitch,
+        w.x,
+        w.y,
+        w.z,
+        s.state.span_axis().y,
+        c.lift,
+        c.drag,
+        c.side,
+        c.roll,
+        c.yaw,
+        c.pitch,
+        s.iterations,
+        s.divergence
+    )
+}
+
+/// Means over the whole turns after the first complete turn following the release, each turn
+/// one batch, with their 95 % intervals; the glide angle per turn from the turn's mean velocity.
+fn report(rows: &[Row], rate_scale: f64, speed_scale: f64) {
+    let released: Vec<&Row> = rows.iter().filter(|r| r.t > T_RELEASE).collect();
+    let Some(first) = released.first() else {
+        println!("no steps after the release");
+        return;
+    };
+    let mut edges = Vec::new();
+    let mut k = 1.0;
+    for r in &released {
+        if (r.pitch - first.pitch).abs() >= k * TAU {
+            edges.push(r.t);
+            k += 1.0;
+        }
+    }
+    println!(
+        "complete turns after the release: {} (at t = {:?})",
+        edges.len(),
+        edges
+    );
+    let batches: Vec<[f64; 5]> = edges
+        .windows(2)
+        .map(|w| turn_means(&released, w[0], w[1]))
+        .collect();
+    let names = [
+        ("mean rotation rate θ̇ (c/U)", rate_scale, "rad/s", 23.4),
+        ("mean speed (U)", speed_scale, "ft/s", 3.75),
+        ("glide angle γ (rad)", 1.0, "rad", -0.81),
+        ("sideways drift speed (U)", speed_scale, "ft/s", f64::NAN),
+        ("turn duration (c/U)", 1.0 / U_OVER_C, "s", f64::NAN),
+    ];
+    for (i, (name, scale, unit, measured)) in names.iter().enumerate() {
+        let b: Vec<(f64, f64)> = batches.iter().map(|m| (m[4], m[i])).collect();
+        match batch_interval(&b) {
+            Ok(iv) => println!(
+                "{name}: {:.4} ± {:.4}  = {:.3} ± {:.3} {unit}  (experiment {measured}; {} turns, n_eff {:.1})",
+                iv.mean,
+                iv.half_width,
+                iv.mean * scale,
+                iv.half_width * scale,
+                iv.samples,
+                iv.n_eff
+            ),
+            Err(e) => println!("{name}: no interval ({e:?}); turns {}", b.len()),
+        }
+    }
+}
+
+/// Time means over [t0, t1]: rate, speed, glide angle of the mean velocity, the spanwise (Z)
+/// speed, and the duration.
+fn turn_means(rows: &[&Row], t0: f64, t1: f64) -> [f64; 5] {
+    let mut sum = [0.0; 5];
+    let mut total = 0.0;
+    for r in rows.iter().filter(|r| r.t > t0 && r.t <= t1) {
+        let [vx, vy, vz] = r.velocity;
+        sum[0] += r.rate * r.dt;
+        sum[1] += (vx * vx + vy * vy + vz * vz).sqrt() * r.dt;
+        sum[2] += vx * r.dt;
+        sum[3] += vy * r.dt;
+        sum[4] += vz * r.dt;
+        total += r.dt;
+    }
+    let m: Vec<f64> = sum.iter().map(|s| s / total).collect();
+    [m[0], m[1], m[3].atan2(m[2]), m[4], total]
+}
