@@ -4,11 +4,17 @@
 //! Writes every step to a CSV and ends with the means over the whole turns after the first
 //! complete one, with 95 % batch-means intervals (docs/statistics.md), beside the experiment.
 //!
-//! `cargo run --release --example card3 -- N T_END finite|periodic OUT.csv`
+//! With `aluminium` as the fifth argument the plate is instead a thin aluminium plate in water
+//! (chord 16 mm, span 32 mm, thickness 0.5 mm), released from rest pitched 0.1 rad: a light plate
+//! (m* about 1/10 of its added mass) that only strong coupling flies.
+//!
+//! `cargo run --release --example card3 -- N T_END finite|periodic OUT.csv [card|aluminium]`
 use std::f64::consts::TAU;
 use std::io::Write;
 
-use platefall_core::body::six::{Constraint6, PhysicalPlate6, RigidBody6};
+use platefall_core::body::six::{
+    thin_plate_inertia, Constraint6, PhysicalPlate6, Plate6, RigidBody6, State6,
+};
 use platefall_core::body::AbStart;
 use platefall_core::flow3d::{
     FlowParams3, FlowSolver3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
@@ -16,8 +22,70 @@ use platefall_core::flow3d::{
 use platefall_core::sim3::{frame_of, Flight3, Sample6};
 use platefall_post::stats::batch_interval;
 
-/// Release time (c/U): the plate is held on its launch path while the flow develops.
-const T_RELEASE: f64 = 5.0;
+/// The plate, its release and its units.
+struct Setup {
+    plate: Plate6,
+    start: State6,
+    /// Span in chords.
+    span: f64,
+    /// t/c.
+    thickness: f64,
+    re: f64,
+    /// Held on its launch path until then (c/U) while the flow develops.
+    t_release: f64,
+    /// U/c (s⁻¹) and U (in the report's speed unit).
+    rate_scale: f64,
+    speed_scale: f64,
+    /// The report's units and the measured figures (rate, speed, glide angle), if any.
+    units: (&'static str, &'static str),
+    measured: [f64; 3],
+}
+
+/// The card of Gallaway (1985), Table I (ft, s), launched as the 2-D free fall.
+fn card() -> Result<Setup, Box<dyn std::error::Error>> {
+    let card = PhysicalPlate6::card();
+    Ok(Setup {
+        plate: card.nondimensional()?,
+        start: PhysicalPlate6::card_release(),
+        span: card.aspect_ratio(),
+        thickness: 1.0 / 16.0,
+        re: card.reynolds(),
+        t_release: 5.0,
+        rate_scale: card.speed / card.chord,
+        speed_scale: card.speed,
+        units: ("rad/s", "ft/s"),
+        measured: [23.4, 3.75, -0.81],
+    })
+}
+
+/// Aluminium (2700 kg/m³) 16 × 32 × 0.5 mm in water (1000 kg/m³, ν = 1e-6 m²/s), from rest;
+/// U = √((ρs/ρ − 1) g t) as for the 2-D physical plates (docs/physics.md §2), buoyancy included.
+fn aluminium() -> Result<Setup, Box<dyn std::error::Error>> {
+    let (chord, span, thick, rho_s, rho, nu, g) =
+        (0.016, 0.032, 0.0005, 2700.0, 1000.0, 1e-6, 9.81);
+    let speed = f64::sqrt((rho_s / rho - 1.0) * g * thick);
+    let volume = chord * span * thick;
+    let [ix, iy, iz] = thin_plate_inertia(rho_s * volume, chord, span);
+    let (m_unit, i_unit) = (rho * chord.powi(3), rho * chord.powi(5));
+    let plate = Plate6::principal(
+        rho_s * volume / m_unit,
+        [ix / i_unit, iy / i_unit, iz / i_unit],
+        g * chord / (speed * speed),
+        rho * volume / m_unit,
+    )?;
+    Ok(Setup {
+        plate,
+        start: State6::release(0.0, 0.0, 0.1),
+        span: span / chord,
+        thickness: thick / chord,
+        re: speed * chord / nu,
+        t_release: 0.0,
+        rate_scale: speed / chord,
+        speed_scale: speed * 100.0,
+        units: ("rad/s", "cm/s"),
+        measured: [f64::NAN; 3],
+    })
+}
 
 /// One step's motion, as the analysis needs it.
 struct Row {
@@ -34,30 +102,33 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let t_end: f64 = args.get(1).map_or(Ok(40.0), |a| a.parse())?;
     let periodic = args.get(2).is_some_and(|a| a == "periodic");
     let out = args.get(3).map_or("card3.csv", String::as_str);
-    let card = PhysicalPlate6::card();
-    let b = card.aspect_ratio();
+    let setup = match args.get(4).map(String::as_str) {
+        None | Some("card") => card()?,
+        Some("aluminium") => aluminium()?,
+        Some(other) => return Err(format!("plate `{other}`: accepted card or aluminium").into()),
+    };
+    let b = setup.span;
     let (span, constraint) = if periodic {
         (Span::Periodic(b), Constraint6::Planar)
     } else {
         (Span::Finite(b), Constraint6::Free)
     };
-    let start = PhysicalPlate6::card_release();
     let grid = Grid3::new(&GridSpec3 {
         resolution: n,
-        thickness: 1.0 / 16.0,
+        thickness: setup.thickness,
         span,
         extent: [8.0; 3],
         stretch: Stretch3::GrowthCap(1.2),
         memory_limit: 8e9,
     })?;
-    eprintln!("cells {}", grid.cells());
+    eprintln!("cells {}, Re {:.1}", grid.cells(), setup.re);
     let params = FlowParams3 {
-        re: card.reynolds(),
+        re: setup.re,
         ..FlowParams3::default()
     };
-    let flow = FlowSolver3::new(grid, params, OuterBc3::FarField, frame_of(&start))?;
-    let body = RigidBody6::new(card.nondimensional()?, constraint, start, 2, AbStart::Ramp)?;
-    let mut flight = Flight3::new(flow, body)?.hold_until(T_RELEASE)?;
+    let flow = FlowSolver3::new(grid, params, OuterBc3::FarField, frame_of(&setup.start))?;
+    let body = RigidBody6::new(setup.plate, constraint, setup.start, 2, AbStart::Ramp)?;
+    let mut flight = Flight3::new(flow, body)?.hold_until(setup.t_release)?;
     let mut csv = std::io::BufWriter::new(std::fs::File::create(out)?);
     writeln!(csv, "step,t,dt,x,y,z,vx,vy,vz,roll,yaw,pitch,omega_x,omega_y,omega_z,span_y,cl,cd,cs,c_roll,c_yaw,c_pitch,iterations,divergence")?;
     let clock = std::time::Instant::now();
@@ -98,12 +169,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         rows.len(),
         clock.elapsed().as_secs_f64()
     );
-    report(&rows, U_OVER_C, card.speed);
+    report(&rows, &setup);
     Ok(())
 }
-
-/// The card's U/c (s⁻¹): 3 ft/s over 0.25 ft.
-const U_OVER_C: f64 = 12.0;
 
 /// The continuous angle nearest `previous` whose wrapped value is `wrapped`.
 fn unwrap(previous: f64, wrapped: f64) -> f64 {
@@ -150,8 +218,8 @@ fn write_row(csv: &mut impl Write, s: &Sample6, pitch: f64) -> std::io::Result<(
 
 /// Means over the whole turns after the first complete turn following the release, each turn
 /// one batch, with their 95 % intervals; the glide angle per turn from the turn's mean velocity.
-fn report(rows: &[Row], rate_scale: f64, speed_scale: f64) {
-    let released: Vec<&Row> = rows.iter().filter(|r| r.t > T_RELEASE).collect();
+fn report(rows: &[Row], setup: &Setup) {
+    let released: Vec<&Row> = rows.iter().filter(|r| r.t > setup.t_release).collect();
     let Some(first) = released.first() else {
         println!("no steps after the release");
         return;
@@ -173,12 +241,24 @@ fn report(rows: &[Row], rate_scale: f64, speed_scale: f64) {
         .windows(2)
         .map(|w| turn_means(&released, w[0], w[1]))
         .collect();
+    let (rate_unit, speed_unit) = setup.units;
+    let [rate, speed, glide] = setup.measured;
     let names = [
-        ("mean rotation rate θ̇ (c/U)", rate_scale, "rad/s", 23.4),
-        ("mean speed (U)", speed_scale, "ft/s", 3.75),
-        ("glide angle γ (rad)", 1.0, "rad", -0.81),
-        ("sideways drift speed (U)", speed_scale, "ft/s", f64::NAN),
-        ("turn duration (c/U)", 1.0 / U_OVER_C, "s", f64::NAN),
+        (
+            "mean rotation rate θ̇ (c/U)",
+            setup.rate_scale,
+            rate_unit,
+            rate,
+        ),
+        ("mean speed (U)", setup.speed_scale, speed_unit, speed),
+        ("glide angle γ (rad)", 1.0, "rad", glide),
+        (
+            "sideways drift speed (U)",
+            setup.speed_scale,
+            speed_unit,
+            f64::NAN,
+        ),
+        ("turn duration (c/U)", 1.0 / setup.rate_scale, "s", f64::NAN),
     ];
     for (i, (name, scale, unit, measured)) in names.iter().enumerate() {
         let b: Vec<(f64, f64)> = batches.iter().map(|m| (m[4], m[i])).collect();
