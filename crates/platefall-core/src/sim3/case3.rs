@@ -4,8 +4,9 @@
 use std::ops::ControlFlow;
 
 use super::run::{run_prescribed, Sample3};
-use super::{planar_frame, Sample6};
-use crate::body::BodyState;
+use super::{frame_of, planar_frame, Flight3, Flight3Error, Sample6};
+use crate::body::six::{Constraint6, Plate6, RigidBody6, State6};
+use crate::body::{wrap_angle, BodyState};
 use crate::flow3d::{
     Flow3Error, FlowParams3, FlowSolver3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
 };
@@ -79,6 +80,41 @@ impl<'a> Run3<'a> {
         let time = &self.config.time;
         run_prescribed(&self.config.case, flow, time.t_end, time.dt_max, observe)
     }
+}
+
+impl Run3<'_> {
+    /// The flight of a free case: `plate` launched as the 2-D free fall (V₀ along γ₀ at α₀, held
+    /// until the release), flying with six degrees of freedom on a finite span and planar on a
+    /// periodic one, with the case's Adams–Bashforth order and start.
+    ///
+    /// # Errors
+    /// [`Flow3Error::BadParameter`] for a case that is not free; the grid's, the body's and the
+    /// coupling's refusals.
+    pub fn flight(&self, plate: Plate6) -> Result<Flight3, Flight3Error> {
+        let (Case::Free { v0, gamma0, alpha0, develop }, Some(b)) =
+            (&self.config.case, &self.config.body)
+        else {
+            let e = Flow3Error::BadParameter {
+                name: "case (free only)",
+                value: f64::NAN,
+            };
+            return Err(e.into());
+        };
+        let start = State6::release(*v0, *gamma0, *alpha0);
+        let constraint = match self.grid.span {
+            Span::Finite(_) => Constraint6::Free,
+            Span::Periodic(_) => Constraint6::Planar,
+        };
+        let grid = Grid3::new(&self.grid)?;
+        let flow = FlowSolver3::new(grid, self.params(), OuterBc3::FarField, frame_of(&start))?;
+        let body = RigidBody6::new(plate, constraint, start, b.ab_order, b.ab_start)?;
+        Flight3::new(flow, body)?.hold_until(*develop)
+    }
+}
+
+/// The pitch angle of `s` continued from `previous` (no jumps of 2π): the 2-D θ of a flight.
+pub fn unwrapped_pitch(previous: f64, s: &State6) -> f64 {
+    previous + wrap_angle(s.orientation.euler_angles().2 - previous)
 }
 
 impl Sample3 {

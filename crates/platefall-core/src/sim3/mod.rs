@@ -11,7 +11,7 @@ mod flight;
 mod planar;
 mod run;
 
-pub use case3::{Run3, EXTENT3, GROWTH3};
+pub use case3::{unwrapped_pitch, Run3, EXTENT3, GROWTH3};
 pub use flight::{frame_of, Flight3, Flight3Error, Sample6};
 pub use planar::planar_frame;
 pub use run::{run_prescribed, Sample3};
