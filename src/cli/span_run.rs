@@ -59,7 +59,7 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
         anyhow::bail!("not a case subcommand");
     };
     if let Some(flag) = unavailable(cmd, record) {
-        anyhow::bail!("{flag} is not available for 3-D runs yet (with --span {span:?})");
+        anyhow::bail!("{flag} is not available for 3-D runs yet (with --span)");
     }
     if let Some(flag) = non_card_plate(cmd) {
         anyhow::bail!("{flag} is not available for 3-D runs yet: free --span flies the card");
