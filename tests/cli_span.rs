@@ -39,8 +39,21 @@ fn table(path: &Path) -> (String, Vec<Vec<f64>>) {
 fn static_run(dir: &Path, name: &str, extra: &[&str]) -> (String, Vec<Vec<f64>>) {
     let csv = dir.join(name);
     let mut args = vec![
-        "static", "--resolution", "8", "--t-end", "0.5", "--extent", "3", "--growth", "1.2",
-        "--thickness", "0.125", "--no-save", "--progress", "off", "--csv",
+        "static",
+        "--resolution",
+        "8",
+        "--t-end",
+        "0.5",
+        "--extent",
+        "3",
+        "--growth",
+        "1.2",
+        "--thickness",
+        "0.125",
+        "--no-save",
+        "--progress",
+        "off",
+        "--csv",
     ];
     args.push(csv.to_str().unwrap());
     args.extend_from_slice(extra);
@@ -61,7 +74,10 @@ fn a_periodic_span_gives_the_two_dimensional_lift_and_drag_per_unit_span() {
     let (a, b) = (two.last().unwrap(), three.last().unwrap());
     assert!((a[0] - 0.5).abs() < 1e-12 && (b[0] - 0.5).abs() < 1e-12);
     let (lift, drag) = ((b[3] / a[3] - 1.0).abs(), (b[4] / a[4] - 1.0).abs());
-    println!("t = 0.5: C_L {} against {}, C_D {} against {}", b[3], a[3], b[4], a[4]);
+    println!(
+        "t = 0.5: C_L {} against {}, C_D {} against {}",
+        b[3], a[3], b[4], a[4]
+    );
     assert!(lift < 0.01 && drag < 0.01, "lift {lift:.4}, drag {drag:.4}");
 }
 
@@ -79,7 +95,10 @@ fn a_finite_span_has_no_side_force_roll_or_yaw() {
         .map(|r| r[5].abs().max(r[6].abs()).max(r[7].abs()) / (1.0 + r[3].abs() + r[4].abs()))
         .fold(0.0, f64::max);
     println!("largest |C_S|, |C_roll|, |C_yaw| on 1 + |C_L| + |C_D|: {largest:.2e}");
-    assert!(rows.iter().all(|r| r[3] > 0.1), "the plate at α = 0.4 lifts");
+    assert!(
+        rows.iter().all(|r| r[3] > 0.1),
+        "the plate at α = 0.4 lifts"
+    );
     // Mirror symmetry about z = 0: zero up to the pressure solve's tolerance.
     assert!(largest < 1e-8, "{largest}");
 }
@@ -90,10 +109,19 @@ fn options_a_three_dimensional_run_cannot_honour_are_refused_in_one_line() {
     let rrd = dir.join("x.rrd");
     let cases: [(&[&str], &str); 6] = [
         (&["pinned", "--span", "2"], "pinned --span"),
-        (&["static", "--span", "2", "--save", rrd.to_str().unwrap()], "--save"),
+        (
+            &["static", "--span", "2", "--save", rrd.to_str().unwrap()],
+            "--save",
+        ),
         (&["forced", "--span", "2", "--serve"], "--serve"),
-        (&["static", "--span", "2", "--vtk", dir.to_str().unwrap()], "--vtk"),
-        (&["static", "--span", "2", "--checkpoint-every", "1"], "--checkpoint-every"),
+        (
+            &["static", "--span", "2", "--vtk", dir.to_str().unwrap()],
+            "--vtk",
+        ),
+        (
+            &["static", "--span", "2", "--checkpoint-every", "1"],
+            "--checkpoint-every",
+        ),
         (&["free", "--span", "2", "--mass", "1"], "--mass"),
     ];
     for (args, flag) in cases {
@@ -114,12 +142,29 @@ fn a_periodic_flight_writes_its_csv_and_summary() {
     let dir = scratch("free");
     let (csv, json) = (dir.join("f.csv"), dir.join("f.json"));
     let (code, out, err) = platefall(&[
-        "free", "--span", "periodic:0.25", "--resolution", "8", "--t-end", "0.3", "--develop",
-        "0.1", "--extent", "3", "--progress", "off", "--csv", csv.to_str().unwrap(),
-        "--summary", json.to_str().unwrap(),
+        "free",
+        "--span",
+        "periodic:0.25",
+        "--resolution",
+        "8",
+        "--t-end",
+        "0.3",
+        "--develop",
+        "0.1",
+        "--extent",
+        "3",
+        "--progress",
+        "off",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--summary",
+        json.to_str().unwrap(),
     ]);
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("cells") && err.contains("no recording"), "{err}");
+    assert!(
+        err.contains("cells") && err.contains("no recording"),
+        "{err}"
+    );
     assert!(out.contains("attitude"), "{out}");
     let (header, rows) = table(&csv);
     assert!(header.starts_with("time [c/U],step,dt [c/U],X [c],Y [c],Z [c]"));
@@ -127,8 +172,11 @@ fn a_periodic_flight_writes_its_csv_and_summary() {
     let last = rows.last().unwrap();
     assert!((last[0] - 0.3).abs() < 1e-9);
     // Planar flight: no sideways motion, the span stays horizontal.
-    assert!(rows.iter().all(|r| r[5] == 0.0 && r[8] == 0.0 && r[15] == 0.0));
-    let s: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert!(rows
+        .iter()
+        .all(|r| r[5] == 0.0 && r[8] == 0.0 && r[15] == 0.0));
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
     assert_eq!(s["case"], "free");
     assert_eq!(s["max_abs_span_y"], 0.0);
     assert!(s["cells_3d"].as_u64().unwrap() > 0 && s["mean_speed"].as_f64().unwrap() > 0.5);

@@ -31,7 +31,10 @@ fn unavailable(cmd: &Command, record: &RecordArgs) -> Option<&'static str> {
         (record.spawn, "--spawn"),
         (record.vtk.is_some(), "--vtk"),
         (record.vtk_every.is_some(), "--vtk-every"),
-        (solver.checkpoint.checkpoint_every.is_some(), "--checkpoint-every"),
+        (
+            solver.checkpoint.checkpoint_every.is_some(),
+            "--checkpoint-every",
+        ),
         (solver.checkpoint.checkpoint.is_some(), "--checkpoint"),
     ];
     given.iter().find(|g| g.0).map(|g| g.1)
@@ -78,7 +81,9 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
         cells as f64 * BYTES_PER_CELL / 1e9
     );
     if !record.no_save {
-        eprintln!("no recording: a 3-D run writes no .rrd yet (--csv and --summary hold its results)");
+        eprintln!(
+            "no recording: a 3-D run writes no .rrd yet (--csv and --summary hold its results)"
+        );
     }
     let mut out = Outputs::new(record.csv.as_deref(), cmd, cells)?;
     let pool = crate::pool::pool(solver.threads)?;
@@ -92,7 +97,14 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
         Err(Stop::Flow(e)) => RunStatus::Diverged(SimError::from(e)),
         Err(Stop::Output(e)) => RunStatus::OutputFailed(e.to_string()),
     };
-    finish(cmd, &run, out, status, start.elapsed().as_secs_f64(), solver.summary.as_deref())
+    finish(
+        cmd,
+        &run,
+        out,
+        status,
+        start.elapsed().as_secs_f64(),
+        solver.summary.as_deref(),
+    )
 }
 
 /// What a 3-D run keeps of its steps.

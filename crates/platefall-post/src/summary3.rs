@@ -112,9 +112,18 @@ pub fn summarize3(
             recirculation_length: None,
         };
         let motion = motion_of(config, &shadow);
-        let ci = intervals_of(config, &shadow, &proxy, planar.strouhal_chord, motion.as_ref());
-        (three.mean_cs_ci95, three.mean_c_roll_ci95, three.mean_c_yaw_ci95) =
-            (ci.mean_cl_ci95, ci.mean_cd_ci95, ci.mean_cm_ci95);
+        let ci = intervals_of(
+            config,
+            &shadow,
+            &proxy,
+            planar.strouhal_chord,
+            motion.as_ref(),
+        );
+        (
+            three.mean_cs_ci95,
+            three.mean_c_roll_ci95,
+            three.mean_c_yaw_ci95,
+        ) = (ci.mean_cl_ci95, ci.mean_cd_ci95, ci.mean_cm_ci95);
         flight_keys(&mut three, attitude, rec.t_release, (t0, t1));
     }
     Summary3 { planar, three }
@@ -134,7 +143,8 @@ fn flight_keys(k: &mut Keys3, rows: &[Attitude], t_release: f64, (t0, t1): (f64,
     let window: Vec<&&Attitude> = after.iter().filter(|a| a.t > t0 && a.t <= t1).collect();
     let total: f64 = window.iter().map(|a| a.dt).sum();
     if total > 0.0 {
-        let mean = |f: fn(&Attitude) -> f64| window.iter().map(|a| f(a) * a.dt).sum::<f64>() / total;
+        let mean =
+            |f: fn(&Attitude) -> f64| window.iter().map(|a| f(a) * a.dt).sum::<f64>() / total;
         k.mean_roll = Some(mean(|a| a.roll));
         k.mean_yaw = Some(mean(|a| a.yaw));
         k.mean_sideways_speed = Some(mean(|a| a.zdot));

@@ -91,8 +91,15 @@ impl Run3<'_> {
     /// [`Flow3Error::BadParameter`] for a case that is not free; the grid's, the body's and the
     /// coupling's refusals.
     pub fn flight(&self, plate: Plate6) -> Result<Flight3, Flight3Error> {
-        let (Case::Free { v0, gamma0, alpha0, develop }, Some(b)) =
-            (&self.config.case, &self.config.body)
+        let (
+            Case::Free {
+                v0,
+                gamma0,
+                alpha0,
+                develop,
+            },
+            Some(b),
+        ) = (&self.config.case, &self.config.body)
         else {
             let e = Flow3Error::BadParameter {
                 name: "case (free only)",
@@ -123,7 +130,13 @@ impl Sample3 {
     pub fn planar(&self, case: &Case) -> StepSample {
         let c = &self.coefficients;
         let state = case.prescribed_state(self.t);
-        StepSample::new(self.step, self.t, self.dt, (c.lift, c.drag, c.pitch), &state)
+        StepSample::new(
+            self.step,
+            self.t,
+            self.dt,
+            (c.lift, c.drag, c.pitch),
+            &state,
+        )
     }
 }
 
@@ -140,6 +153,12 @@ impl Sample6 {
             ydot: s.velocity.y,
             omega: s.omega.z,
         };
-        StepSample::new(self.step, self.t, self.dt, (c.lift, c.drag, c.pitch), &state)
+        StepSample::new(
+            self.step,
+            self.t,
+            self.dt,
+            (c.lift, c.drag, c.pitch),
+            &state,
+        )
     }
 }
