@@ -107,7 +107,8 @@ fn a_finite_span_has_no_side_force_roll_or_yaw() {
 fn options_a_three_dimensional_run_cannot_honour_are_refused_in_one_line() {
     let dir = scratch("refused");
     let rrd = dir.join("x.rrd");
-    let cases: [(&[&str], &str); 6] = [
+    let cases: [(&[&str], &str); 7] = [
+        (&["static", "--span", "2", "--shape", "ellipse"], "--shape"),
         (&["pinned", "--span", "2"], "pinned --span"),
         (
             &["static", "--span", "2", "--save", rrd.to_str().unwrap()],

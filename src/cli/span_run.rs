@@ -9,6 +9,7 @@ use super::command::Command;
 use super::config::run_config;
 use super::limits::memory_limit;
 use super::record_args::RecordArgs;
+use super::shape_args::ShapeKind;
 use crate::exit::Exit;
 use platefall_core::body::six::PhysicalPlate6;
 use platefall_core::flow3d::{Grid3, Span, BYTES_PER_CELL};
@@ -24,6 +25,11 @@ fn unavailable(cmd: &Command, record: &RecordArgs) -> Option<&'static str> {
     let solver = cmd.case_args()?.0;
     let given = [
         (matches!(cmd, Command::Pinned(_)), "pinned --span"),
+        (
+            solver.section.shape != ShapeKind::Rect,
+            "--shape other than rect",
+        ),
+        (solver.seed_grid, "--seed-grid"),
         (record.save.is_some(), "--save"),
         (record.serve, "--serve"),
         (record.web, "--web"),
