@@ -2,26 +2,10 @@
 //! loads per unit span, a finite span has no side force, roll or yaw by its mirror symmetry in z,
 //! the options a 3-D run cannot honour are refused in one line, and a 3-D flight writes its CSV
 //! and summary.
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 
-fn platefall(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_platefall"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("platefall-span-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+mod cli_common;
+use cli_common::{platefall, scratch};
 
 /// The CSV's header and its data rows (the trailer skipped).
 fn table(path: &Path) -> (String, Vec<Vec<f64>>) {

@@ -8,7 +8,7 @@ use super::{frame_of, planar_frame, Flight3, Flight3Error, Sample6};
 use crate::body::six::{Constraint6, Plate6, RigidBody6, State6};
 use crate::body::{wrap_angle, BodyState};
 use crate::flow3d::{
-    Flow3Error, FlowParams3, FlowSolver3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
+    Coefficients3, Flow3Error, FlowParams3, FlowSolver3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
 };
 use crate::sim::{Case, RunConfig, StepSample};
 
@@ -124,19 +124,24 @@ pub fn unwrapped_pitch(previous: f64, s: &State6) -> f64 {
     previous + wrap_angle(s.orientation.euler_angles().2 - previous)
 }
 
+/// The 2-D sample of a step of the plate at `state` with the coefficients `c` (C_L, C_D and
+/// C_M = the pitching moment).
+fn planar_sample(
+    step: u64,
+    (t, dt): (f64, f64),
+    c: &Coefficients3,
+    state: &BodyState,
+) -> StepSample {
+    StepSample::new(step, t, dt, (c.lift, c.drag, c.pitch), state)
+}
+
 impl Sample3 {
     /// The 2-D sample of this step of `case`: lift, drag and pitching moment, and the plate's
     /// prescribed planar motion.
     pub fn planar(&self, case: &Case) -> StepSample {
         let c = &self.coefficients;
         let state = case.prescribed_state(self.t);
-        StepSample::new(
-            self.step,
-            self.t,
-            self.dt,
-            (c.lift, c.drag, c.pitch),
-            &state,
-        )
+        planar_sample(self.step, (self.t, self.dt), c, &state)
     }
 }
 
@@ -153,12 +158,6 @@ impl Sample6 {
             ydot: s.velocity.y,
             omega: s.omega.z,
         };
-        StepSample::new(
-            self.step,
-            self.t,
-            self.dt,
-            (c.lift, c.drag, c.pitch),
-            &state,
-        )
+        planar_sample(self.step, (self.t, self.dt), c, &state)
     }
 }
