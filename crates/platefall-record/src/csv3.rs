@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 
 use super::csv::trailer;
 use super::output::{OutputError, PendingFile};
+use platefall_core::flow3d::Coefficients3;
 use platefall_core::sim::RunStatus;
 use platefall_core::sim3::{Sample3, Sample6};
 
@@ -41,18 +42,12 @@ impl Csv3Writer {
 
     /// Appends one step of a prescribed case.
     pub fn write3(&mut self, s: &Sample3) -> Result<(), OutputError> {
-        let c = &s.coefficients;
         let line = format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{}",
             s.t,
             s.step,
             s.dt,
-            c.lift,
-            c.drag,
-            c.side,
-            c.roll,
-            c.yaw,
-            c.pitch,
+            six(&s.coefficients),
             s.theta,
             s.omega,
             s.iterations,
@@ -63,15 +58,10 @@ impl Csv3Writer {
 
     /// Appends one step of a flight; `pitch` is the unwrapped pitch angle.
     pub fn write6(&mut self, s: &Sample6, pitch: f64) -> Result<(), OutputError> {
-        let (p, v, w, c) = (
-            s.state.position,
-            s.state.velocity,
-            s.state.omega,
-            s.coefficients,
-        );
+        let (p, v, w) = (s.state.position, s.state.velocity, s.state.omega);
         let (roll, yaw, _) = s.state.orientation.euler_angles();
         let line = format!(
-            "{},{},{},{},{},{},{},{},{},{roll},{yaw},{pitch},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{roll},{yaw},{pitch},{},{},{},{},{},{},{}",
             s.t,
             s.step,
             s.dt,
@@ -85,12 +75,7 @@ impl Csv3Writer {
             w.y,
             w.z,
             s.state.span_axis().y,
-            c.lift,
-            c.drag,
-            c.side,
-            c.roll,
-            c.yaw,
-            c.pitch,
+            six(&s.coefficients),
             s.iterations,
             s.divergence
         );
@@ -112,4 +97,12 @@ impl Csv3Writer {
         let (path, _) = self.out.commit()?;
         Ok((path, self.rows))
     }
+}
+
+/// The six coefficients as CSV fields: C_L, C_D, C_S, C_roll, C_yaw, C_pitch.
+fn six(c: &Coefficients3) -> String {
+    format!(
+        "{},{},{},{},{},{}",
+        c.lift, c.drag, c.side, c.roll, c.yaw, c.pitch
+    )
 }
