@@ -261,7 +261,9 @@ fn report(rows: &[Row], setup: &Setup) {
         ("turn duration (c/U)", 1.0 / setup.rate_scale, "s", f64::NAN),
     ];
     for (i, (name, scale, unit, measured)) in names.iter().enumerate() {
-        let b: Vec<(f64, f64)> = batches.iter().map(|m| (m[4], m[i])).collect();
+        // Time means weigh each turn by its duration; the duration itself is a plain mean.
+        let weight = |m: &[f64; 5]| if i == 4 { 1.0 } else { m[4] };
+        let b: Vec<(f64, f64)> = batches.iter().map(|m| (weight(m), m[i])).collect();
         match batch_interval(&b) {
             Ok(iv) => println!(
                 "{name}: {:.4} ± {:.4}  = {:.3} ± {:.3} {unit}  (experiment {measured}; {} turns, n_eff {:.1})",
