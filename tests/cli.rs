@@ -1,25 +1,8 @@
 //! The binary as a user meets it: bad input is refused with one clear line and exit code 2, with
 //! nothing written; a good run writes the summary JSON with its stable keys.
-use std::path::PathBuf;
-use std::process::Command;
 
-fn platefall(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_platefall"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("platefall-cli-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
+mod cli_common;
+use cli_common::{platefall, scratch};
 
 #[test]
 fn bad_values_are_refused_naming_the_value_and_range() {

@@ -7,9 +7,12 @@ use super::flags::ArgError;
 use super::plate_args::{BodyArgs, CoupledBuilder};
 use super::record_args::RecordArgs;
 use super::shape_args::ShapeArgs;
+use super::span_arg::parse_span;
 use platefall_core::config::{defaults, RunBuilder};
 use platefall_core::flow::FarFieldScheme;
+use platefall_core::flow3d::Span;
 use platefall_core::sim::ValidatedConfig;
+use platefall_core::sim3::{EXTENT3, GROWTH3};
 
 /// Options shared by every case.
 #[derive(Args, Debug, Clone)]
@@ -33,12 +36,19 @@ pub struct SolverArgs {
     pub seed_grid: bool,
     #[command(flatten)]
     pub section: ShapeArgs,
-    /// Distance from the plate to the outer boundary, in chords.
-    #[arg(long, default_value_t = defaults::EXTENT, allow_negative_numbers = true)]
-    pub extent: f64,
-    /// Cap on the ratio of neighbouring cell sizes in the stretched region.
-    #[arg(long, default_value_t = defaults::GROWTH, allow_negative_numbers = true)]
-    pub growth: f64,
+    /// Distance from the plate to the outer boundary, in chords (with --span: along every
+    /// direction) [default: 15; with --span 8].
+    #[arg(long, allow_negative_numbers = true)]
+    pub extent: Option<f64>,
+    /// Cap on the ratio of neighbouring cell sizes in the stretched region [default: 1.045;
+    /// with --span 1.2].
+    #[arg(long, allow_negative_numbers = true)]
+    pub growth: Option<f64>,
+    /// Run the flow in three dimensions around a plate of this span (static, forced, free): B
+    /// (a finite span of B chords, free tips) or periodic:P (an infinite span, periodic over P
+    /// chords). The CSV, summary and report hold the six coefficients; no recording is written.
+    #[arg(long, value_parser = parse_span)]
+    pub span: Option<Span>,
     /// Courant number of the convective time-step limit (AB2 with the limited κ = 1/3 scheme was
     /// measured stable at 0.6 and unstable at 0.8).
     #[arg(long, default_value_t = defaults::CFL, allow_negative_numbers = true)]
@@ -223,6 +233,24 @@ pub struct FreeArgs {
 }
 
 impl SolverArgs {
+    /// `--extent`, or the default of a 2-D run or, with `--span`, of a 3-D one.
+    pub fn extent(&self) -> f64 {
+        let default = match self.span {
+            Some(_) => EXTENT3,
+            None => defaults::EXTENT,
+        };
+        self.extent.unwrap_or(default)
+    }
+
+    /// `--growth`, or the default of a 2-D run or, with `--span`, of a 3-D one.
+    pub fn growth(&self) -> f64 {
+        let default = match self.span {
+            Some(_) => GROWTH3,
+            None => defaults::GROWTH,
+        };
+        self.growth.unwrap_or(default)
+    }
+
     /// Applies the solver options to a run of any case; `physical` is a physical plate's t/c,
     /// the section's thickness unless --thickness is given.
     fn apply<C>(
@@ -232,8 +260,8 @@ impl SolverArgs {
     ) -> Result<RunBuilder<C>, ArgError> {
         b = b
             .resolution(self.resolution)
-            .extent(self.extent)
-            .growth(self.growth)
+            .extent(self.extent())
+            .growth(self.growth())
             .cfl(self.cfl)
             .dt_max(self.dt_max)
             .cc(self.cc)

@@ -145,7 +145,7 @@ fn show(x: f64) -> String {
 }
 
 /// The memory limit in bytes and how it was worked out.
-fn memory_limit(spec: &str) -> anyhow::Result<(f64, String)> {
+pub(super) fn memory_limit(spec: &str) -> anyhow::Result<(f64, String)> {
     let bad = || {
         anyhow::anyhow!(
             "--max-memory {spec:?}: accepted: a share of physical memory like \"75%\", a size like \"16GB\" or \"512MiB\", or \"unlimited\""

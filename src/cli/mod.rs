@@ -33,6 +33,7 @@ mod shape_args;
 mod shell;
 mod signals;
 mod span_arg;
+mod span_run;
 mod sweep_args;
 mod sweep_cases;
 

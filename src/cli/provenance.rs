@@ -5,7 +5,6 @@ use serde::Serialize;
 
 use super::command::Command;
 use crate::version::program_and_commit;
-use platefall_post::summary::Summary;
 use platefall_record::provenance::{InputFile, Invocation};
 
 /// This process's invocation of the case `cmd`, with the text of the `--polygon` it names.
@@ -25,15 +24,15 @@ pub fn invocation(cmd: &Command) -> Invocation {
 /// The summary file: the program and commit (`version`), the summary's keys, the arguments
 /// (`args`, after the program's name).
 #[derive(Serialize)]
-struct SummaryFile<'a> {
+struct SummaryFile<'a, S: Serialize> {
     version: &'a str,
     #[serde(flatten)]
-    summary: &'a Summary,
+    summary: &'a S,
     args: &'a [String],
 }
 
 /// The summary JSON (pretty) of a run started as `invocation` says.
-pub fn summary_json(invocation: &Invocation, summary: &Summary) -> String {
+pub fn summary_json<S: Serialize>(invocation: &Invocation, summary: &S) -> String {
     let file = SummaryFile {
         version: &invocation.version,
         summary,

@@ -57,6 +57,9 @@ pub(super) struct Started {
 /// was run (bad input; or, for an [`OutputError`](platefall_record::output::OutputError), an
 /// output that could not even be created).
 pub fn run_case(cmd: &Command) -> anyhow::Result<Exit> {
+    if let Some(span) = cmd.case_args().and_then(|(solver, _)| solver.span) {
+        return super::span_run::run_span(cmd, span);
+    }
     let mut p = prepare(cmd)?;
     let Some((solver, _)) = cmd.case_args() else {
         anyhow::bail!("not a case subcommand");

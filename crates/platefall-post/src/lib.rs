@@ -53,6 +53,7 @@ pub mod resample;
 pub mod rng;
 pub mod stats;
 pub mod summary;
+pub mod summary3;
 pub mod view;
 pub mod wake;
 

@@ -165,7 +165,7 @@ fn set_motion(
 }
 
 /// The regime window and its classification (coupled runs).
-fn motion_of(config: &RunConfig, rec: &RunRecord) -> Option<(TimeWindow, MotionClass)> {
+pub(crate) fn motion_of(config: &RunConfig, rec: &RunRecord) -> Option<(TimeWindow, MotionClass)> {
     if !config.case.is_coupled() {
         return None;
     }

@@ -152,6 +152,7 @@
 pub mod cadence;
 pub mod checkpoint;
 mod csv;
+pub mod csv3;
 pub mod files;
 mod inject;
 mod logger;

@@ -2,6 +2,7 @@
 use crate::body::AbError;
 use crate::flow::FlowError;
 use crate::param::InputError;
+use crate::sim3::Flight3Error;
 
 /// Why a run could not be built or could not go on.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -12,6 +13,10 @@ pub enum SimError {
     /// The flow solver could not be set up, or its solution diverged.
     #[error(transparent)]
     Flow(#[from] FlowError),
+    /// The 3-D flow or flight could not be set up, or its solution diverged
+    /// (docs/three-d.md "Cases").
+    #[error(transparent)]
+    Flight3(#[from] Flight3Error),
     /// The plate's integrator refused its input.
     #[error(transparent)]
     Body(#[from] AbError),
