@@ -1,7 +1,7 @@
 //! `static`, `forced` and `free` with `--span` (docs/three-d.md "Cases"): the case's options run
 //! the 3-D flow (`sim3::Run3`), writing the 3-D CSV, the summary (the 2-D keys of the run's
-//! projection and the 3-D keys) and the report. No recording yet: the options that need one
-//! are refused.
+//! projection and the 3-D keys), the report and the 3-D recording (docs/three-d.md
+//! "Recording"). Options a 3-D run cannot honour yet are refused.
 use std::path::Path;
 use std::time::Instant;
 
@@ -12,13 +12,16 @@ use super::record_args::RecordArgs;
 use super::shape_args::ShapeKind;
 use crate::exit::Exit;
 use platefall_core::body::six::PhysicalPlate6;
-use platefall_core::flow3d::{Grid3, Span, BYTES_PER_CELL};
+use platefall_core::flow3d::{FlowSolver3, Grid3, Span, BYTES_PER_CELL};
 use platefall_core::sim::{History, RunRecord, RunStatus, SimError};
 use platefall_core::sim3::{unwrapped_pitch, Flight3Error, Run3, Sample3, Sample6};
 use platefall_post::summary3::{lateral_sample, report3, summarize3, Attitude};
 use platefall_record::csv3::{Csv3Writer, CSV3_HEADER, CSV6_HEADER};
 use platefall_record::files::check_writable;
+use platefall_record::messages::RunOutcome;
+use platefall_record::messages3::{RunInfo3, Step3};
 use platefall_record::output::{write_atomically, OutputError};
+use platefall_record::recorder3::Recorder3;
 
 /// The first option given that a 3-D run cannot honour yet.
 fn unavailable(cmd: &Command, record: &RecordArgs) -> Option<&'static str> {
@@ -30,11 +33,6 @@ fn unavailable(cmd: &Command, record: &RecordArgs) -> Option<&'static str> {
             "--shape other than rect",
         ),
         (solver.seed_grid, "--seed-grid"),
-        (record.save.is_some(), "--save"),
-        (record.serve, "--serve"),
-        (record.web, "--web"),
-        (record.connect.is_some(), "--connect"),
-        (record.spawn, "--spawn"),
         (record.vtk.is_some(), "--vtk"),
         (record.vtk_every.is_some(), "--vtk-every"),
         (
@@ -86,12 +84,8 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
         "3-D grid: {cells} cells, about {:.2} GB",
         cells as f64 * BYTES_PER_CELL / 1e9
     );
-    if !record.no_save {
-        eprintln!(
-            "no recording: a 3-D run writes no .rrd yet (--csv and --summary hold its results)"
-        );
-    }
     let mut out = Outputs::new(record.csv.as_deref(), cmd, cells)?;
+    out.recording = Recording::start(cmd, &run, record, cells)?;
     let pool = crate::pool::pool(solver.threads)?;
     let start = Instant::now();
     let result = pool.install(|| match cmd {
@@ -120,6 +114,7 @@ struct Outputs {
     lateral: History,
     attitude: Vec<Attitude>,
     cells: usize,
+    recording: Option<Recording>,
 }
 
 impl Outputs {
@@ -134,6 +129,7 @@ impl Outputs {
             lateral: History::default(),
             attitude: Vec::new(),
             cells,
+            recording: None,
         })
     }
 
@@ -148,9 +144,13 @@ impl Outputs {
 fn prescribe(run: &Run3, out: &mut Outputs) -> Result<(), Stop> {
     let mut flow = run.flow()?;
     let mut failed = None;
-    run.run(&mut flow, |s: &Sample3| {
+    run.run(&mut flow, |s: &Sample3, flow: &FlowSolver3| {
         let c = &s.coefficients;
-        out.keep(s.planar(&run.config.case), [c.side, c.roll, c.yaw]);
+        let planar = s.planar(&run.config.case);
+        out.keep(planar, [c.side, c.roll, c.yaw]);
+        if let Some(r) = &mut out.recording {
+            r.step(Step3::of_prescribed(s, &planar), flow);
+        }
         match out.csv.as_mut().map(|w| w.write3(s)) {
             Some(Err(e)) => {
                 failed = Some(e);
@@ -197,6 +197,9 @@ fn fly(run: &Run3, out: &mut Outputs) -> Result<(), Stop> {
             zdot: s.state.velocity.z,
             span_y: s.state.span_axis().y,
         });
+        if let Some(r) = &mut out.recording {
+            r.step(Step3::of_flight(&s, pitch), flight.flow());
+        }
         if let Some(Err(e)) = out.csv.as_mut().map(|w| w.write6(&s, pitch)) {
             return Err(Stop::Output(e));
         }
@@ -230,10 +233,20 @@ fn finish(
         let (path, rows) = w.finish(&status)?;
         eprintln!("CSV: {} ({rows} rows)", path.display());
     }
+    let json = super::provenance::summary_json(&invocation, &sum);
     if let Some(p) = summary_path {
-        let json = super::provenance::summary_json(&invocation, &sum);
         if let Err(e) = write_atomically("--summary", p, json.as_bytes()) {
             eprintln!("error: {e}");
+            code = Exit::OutputFailed;
+        }
+    }
+    if let Some(r) = out.recording {
+        let outcome = RunOutcome {
+            status: status.clone(),
+            summary_json: json,
+            report: text.clone(),
+        };
+        if !r.finish(outcome) {
             code = Exit::OutputFailed;
         }
     }
@@ -244,4 +257,106 @@ fn finish(
     }
     print!("{text}");
     Ok(code)
+}
+
+/// Snapshot cadence of a 3-D recording without `--field-every` (c/U).
+const FIELD_EVERY_3D: f64 = 0.5;
+/// The Q level of the recording's vortex iso-surface ((U/c)²).
+const Q_LEVEL: f64 = 2.0;
+/// The vorticity at which the recording's slices saturate (U/c).
+const VORTICITY_SCALE: f64 = 5.0;
+
+/// The recording of a 3-D run: its logger and the snapshot cadence.
+struct Recording {
+    recorder: Recorder3,
+    every: f64,
+    next: f64,
+}
+
+impl Recording {
+    /// Opens the recording the options ask for (`recordings/<case>-3d.rrd` by default), or
+    /// none without one.
+    fn start(
+        cmd: &Command,
+        run: &Run3,
+        record: &RecordArgs,
+        cells: usize,
+    ) -> anyhow::Result<Option<Recording>> {
+        if !record.uses_rerun() {
+            return Ok(None);
+        }
+        let case = run.config.case.kind();
+        let mut args = record.clone();
+        if args.save.is_none() {
+            args.save =
+                Some(RecordArgs::default_save_path(case).with_file_name(format!("{case}-3d.rrd")));
+        }
+        args.field_every = Some(record.field_every.unwrap_or(FIELD_EVERY_3D));
+        let opts = args.resolve(case, &[])?;
+        let span = run.grid.span;
+        let half_span = 0.5 * span.length();
+        let title = match span {
+            Span::Finite(b) => format!("{}, span {b} chords", run.config.title()),
+            Span::Periodic(p) => format!("{}, periodic span {p} chords", run.config.title()),
+        };
+        let invocation = super::provenance::invocation(cmd);
+        let config_markdown = format!(
+            "# {title}\n\n```text\n{}\n```\n\n{cells} cells; {}\n",
+            invocation.args.join(" "),
+            invocation.version
+        );
+        let info = RunInfo3 {
+            title,
+            config_markdown,
+            half_size: [0.5, 0.5 * run.grid.thickness, half_span],
+            periodic: matches!(span, Span::Periodic(_)),
+            t_end: Some(run.config.time.t_end),
+            q_level: Q_LEVEL,
+            vorticity_scale: VORTICITY_SCALE,
+        };
+        let every = opts.field_every;
+        Ok(Some(Recording {
+            recorder: Recorder3::start(&opts, &info)?,
+            every,
+            next: 0.0,
+        }))
+    }
+
+    /// Sends a step and, when due and the logger keeps up, the flow's snapshot.
+    fn step(&mut self, s: Step3, flow: &FlowSolver3) {
+        self.recorder.step(s);
+        if s.t + 1e-9 >= self.next {
+            self.next = s.t + self.every;
+            if self.recorder.wants_field() {
+                self.recorder.field(flow.snapshot());
+            }
+        }
+    }
+
+    /// Commits the recording and says what it holds; false if it failed.
+    fn finish(self, outcome: RunOutcome) -> bool {
+        let report = self.recorder.finish(outcome);
+        if let Some((path, bytes)) = &report.viewer.rrd {
+            let skipped = if report.skipped > 0 {
+                format!(", {} snapshots skipped", report.skipped)
+            } else {
+                String::new()
+            };
+            eprintln!(
+                "recording: {} ({:.1} MB{skipped})",
+                path.display(),
+                *bytes as f64 / 1e6
+            );
+        }
+        for n in &report.viewer.notes {
+            eprintln!("platefall: warning: {n}");
+        }
+        if let Some(server) = report.viewer.server {
+            server.shut_down();
+        }
+        for e in &report.errors {
+            eprintln!("error: {e}");
+        }
+        report.errors.is_empty()
+    }
 }

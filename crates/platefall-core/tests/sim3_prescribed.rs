@@ -35,7 +35,7 @@ fn solver(case: &Case, span: Span) -> FlowSolver3 {
 fn run(case: Case, span: Span, t_end: f64) -> Vec<Sample3> {
     let mut flow = solver(&case, span);
     let mut samples = Vec::new();
-    run_prescribed(&case, &mut flow, t_end, 0.05, |s| {
+    run_prescribed(&case, &mut flow, t_end, 0.05, |s, _| {
         samples.push(*s);
         ControlFlow::Continue(())
     })
@@ -108,6 +108,11 @@ fn forced_rotation_follows_its_law_and_bad_cases_are_refused() {
         develop: 1.0,
         speed: 1.0,
     };
-    assert!(run_prescribed(&pinned, &mut flow, 1.0, 0.05, |_| ControlFlow::Continue(())).is_err());
-    assert!(run_prescribed(&case, &mut flow, 1.0, 0.0, |_| ControlFlow::Continue(())).is_err());
+    assert!(
+        run_prescribed(&pinned, &mut flow, 1.0, 0.05, |_, _| ControlFlow::Continue(
+            ()
+        ))
+        .is_err()
+    );
+    assert!(run_prescribed(&case, &mut flow, 1.0, 0.0, |_, _| ControlFlow::Continue(())).is_err());
 }

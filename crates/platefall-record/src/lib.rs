@@ -157,11 +157,13 @@ pub mod files;
 mod inject;
 mod logger;
 pub mod messages;
+pub mod messages3;
 pub mod options;
 pub mod output;
 mod progress;
 pub mod provenance;
 pub mod recorded;
+pub mod recorder3;
 pub mod view_options;
 #[cfg(feature = "viewer")]
 pub mod viewer;

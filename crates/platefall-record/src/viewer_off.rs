@@ -87,6 +87,34 @@ impl Viewer {
 /// # Errors
 ///
 /// Always: [`ViewerRefusal`] "this build has no viewer".
+/// Stand-in for the 3-D recording: cannot be opened.
+pub enum Viewer3 {}
+
+impl Viewer3 {
+    /// Refuses: no viewer in this build.
+    pub fn open(
+        _opts: &RecordOptions,
+        _info: &crate::messages3::RunInfo3,
+    ) -> anyhow::Result<Viewer3> {
+        anyhow::bail!("this platefall was built without the `viewer` feature")
+    }
+    /// Never called.
+    pub fn step(&mut self, _s: &crate::messages3::Step3) -> Result<(), RecordingError> {
+        match *self {}
+    }
+    /// Never called.
+    pub fn field(
+        &mut self,
+        _f: &platefall_core::flow3d::FieldSnapshot3,
+    ) -> Result<(), RecordingError> {
+        match *self {}
+    }
+    /// Never called.
+    pub fn finish(self, _o: &RunOutcome, _errors: &mut Vec<String>) -> ViewerReport {
+        match self {}
+    }
+}
+
 pub fn check_memory_limit(_limit: &str) -> Result<(), ViewerRefusal> {
     Err(ViewerRefusal("this build has no viewer".into()))
 }

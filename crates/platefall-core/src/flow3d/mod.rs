@@ -40,6 +40,7 @@ mod multigrid;
 mod params;
 mod plate;
 mod project;
+mod snapshot;
 mod solver;
 
 pub use added_mass::AddedMass3;
@@ -54,4 +55,5 @@ pub use metrics::Metrics3;
 pub use multigrid::MultigridCg;
 pub use params::FlowParams3;
 pub use project::{JacobiCg, PoissonOperator, PoissonSolve, SolveStats};
+pub use snapshot::FieldSnapshot3;
 pub use solver::{FlowSolver3, ForceFn3};

@@ -75,7 +75,7 @@ impl<'a> Run3<'a> {
     pub fn run(
         &self,
         flow: &mut FlowSolver3,
-        observe: impl FnMut(&Sample3) -> ControlFlow<()>,
+        observe: impl FnMut(&Sample3, &FlowSolver3) -> ControlFlow<()>,
     ) -> Result<(), Flow3Error> {
         let time = &self.config.time;
         run_prescribed(&self.config.case, flow, time.t_end, time.dt_max, observe)

@@ -27,8 +27,8 @@ pub struct Sample3 {
 }
 
 /// Steps `flow` (built at the case's state at t = 0) to `t_end` with Δt = min(stable Δt,
-/// `dt_max`), the plate moving as `case` prescribes; `observe` sees every step and may stop
-/// the run.
+/// `dt_max`), the plate moving as `case` prescribes; `observe` sees every step and the flow
+/// after it, and may stop the run.
 ///
 /// # Errors
 /// [`Flow3Error::BadParameter`] for a `case` that is not prescribed (pinned, free) or a
@@ -39,7 +39,7 @@ pub fn run_prescribed(
     flow: &mut FlowSolver3,
     t_end: f64,
     dt_max: f64,
-    mut observe: impl FnMut(&Sample3) -> ControlFlow<()>,
+    mut observe: impl FnMut(&Sample3, &FlowSolver3) -> ControlFlow<()>,
 ) -> Result<(), Flow3Error> {
     if !matches!(case, Case::Static { .. } | Case::Forced { .. }) {
         return Err(Flow3Error::BadParameter {
@@ -69,7 +69,7 @@ pub fn run_prescribed(
             iterations: stats.iterations,
             divergence: stats.divergence,
         };
-        if observe(&sample).is_break() {
+        if observe(&sample, flow).is_break() {
             break;
         }
     }

@@ -14,6 +14,7 @@ mod rrd_file;
 mod scene;
 mod section;
 mod sinks;
+mod space;
 mod statics;
 mod text;
 mod view_properties;
@@ -39,6 +40,7 @@ pub use read::read_recording;
 use rrd_file::{commit_file, RrdFile, FLUSH_LIMIT};
 use scene::Scene;
 use sinks::{open_sinks, ConnectStats};
+pub use space::{paths3, Viewer3};
 use web::WebServer;
 pub use web::WEB_AVAILABLE;
 
@@ -72,10 +74,10 @@ impl LiveServer {
     }
 }
 
-/// The recording stream of one run and its scene.
-pub struct Viewer {
+/// The recording stream of one run and its sinks (file, --serve, --web, --connect), whatever
+/// its scene.
+pub(crate) struct Stream {
     rec: RecordingStream,
-    scene: Option<Scene>,
     rrd: Option<Arc<RrdFile>>,
     serving: bool,
     web: Option<WebServer>,
@@ -83,10 +85,10 @@ pub struct Viewer {
     notes: Vec<String>,
 }
 
-impl Viewer {
-    /// Opens every sink asked for in `opts`, sends the blueprint and the static parts of the
-    /// scene. An error here means nothing was started.
-    pub fn open(opts: &RecordOptions, info: &RunInfo) -> anyhow::Result<Viewer> {
+impl Stream {
+    /// Opens every sink asked for in `opts` and the recording named `title`. An error here
+    /// means nothing was started.
+    pub(crate) fn open(opts: &RecordOptions, title: &str) -> anyhow::Result<Stream> {
         let set = open_sinks(opts)?;
         for n in &set.notes {
             eprintln!("platefall: warning: {n}");
@@ -102,21 +104,92 @@ impl Viewer {
             builder = builder.recording_id(id.clone());
         }
         let rec = builder
-            .recording_name(info.title.clone())
+            .recording_name(title.to_owned())
             .enabled(true)
             .set_sinks(set.sinks)
             .context("cannot start the Rerun recording")?;
         rec.set_log_tick_enabled(false);
         rec.set_log_time_enabled(false);
-        let scene = Scene::start(rec.clone(), info, opts).context("recording")?;
-        Ok(Viewer {
+        Ok(Stream {
             rec,
-            scene: Some(scene),
             rrd: set.rrd,
             serving: set.serve_url.is_some(),
             web: set.web,
             connect: set.connect,
             notes: set.notes,
+        })
+    }
+
+    /// The recording stream (scenes log through a clone).
+    pub(crate) fn rec(&self) -> &RecordingStream {
+        &self.rec
+    }
+
+    /// The live-stream counters so far.
+    pub(crate) fn connect_report(&self) -> Option<ConnectReport> {
+        self.connect.as_ref().map(|(url, st)| ConnectReport {
+            url: url.clone(),
+            sent: st.sent.load(Ordering::Relaxed),
+            dropped: st.dropped.load(Ordering::Relaxed),
+            ever_connected: st.ever_connected.load(Ordering::Relaxed),
+        })
+    }
+
+    /// The first write error of the .rrd file so far (cheap).
+    pub(crate) fn output_error(&self) -> Option<OutputError> {
+        self.rrd.as_ref().and_then(|f| f.error())
+    }
+
+    /// Checks that the .rrd file being written is still on disk.
+    pub(crate) fn check_outputs(&self) -> Option<OutputError> {
+        self.rrd.as_ref().and_then(|f| f.check())
+    }
+
+    /// Commits the file (footer, sync, rename) and keeps the --serve server up unless an error
+    /// happened (`errors` holds what went wrong, and gains the file's own error).
+    pub(crate) fn finish(mut self, errors: &mut Vec<String>) -> ViewerReport {
+        let rrd = match self.rrd.take() {
+            Some(file) => commit_file(&self.rec, &file)
+                .map_err(|e| errors.push(e.to_string()))
+                .ok(),
+            None => {
+                let _ = self.rec.flush_with_timeout(FLUSH_LIMIT);
+                None
+            }
+        };
+        let connect = self.connect_report();
+        let mut notes = self.notes;
+        if let Some(c) = &connect {
+            notes.extend(connect_note(c, rrd.is_some()));
+        }
+        let server = (self.serving && errors.is_empty()).then(|| LiveServer {
+            rec: self.rec,
+            _web: self.web,
+        });
+        ViewerReport {
+            rrd,
+            connect,
+            server,
+            notes,
+        }
+    }
+}
+
+/// The recording stream of one run and its scene.
+pub struct Viewer {
+    stream: Stream,
+    scene: Option<Scene>,
+}
+
+impl Viewer {
+    /// Opens every sink asked for in `opts`, sends the blueprint and the static parts of the
+    /// scene. An error here means nothing was started.
+    pub fn open(opts: &RecordOptions, info: &RunInfo) -> anyhow::Result<Viewer> {
+        let stream = Stream::open(opts, &info.title)?;
+        let scene = Scene::start(stream.rec().clone(), info, opts).context("recording")?;
+        Ok(Viewer {
+            stream,
+            scene: Some(scene),
         })
     }
 
@@ -151,22 +224,17 @@ impl Viewer {
 
     /// The live-stream counters so far.
     pub fn connect_report(&self) -> Option<ConnectReport> {
-        self.connect.as_ref().map(|(url, st)| ConnectReport {
-            url: url.clone(),
-            sent: st.sent.load(Ordering::Relaxed),
-            dropped: st.dropped.load(Ordering::Relaxed),
-            ever_connected: st.ever_connected.load(Ordering::Relaxed),
-        })
+        self.stream.connect_report()
     }
 
     /// The first write error of the .rrd file so far (cheap).
     pub fn output_error(&self) -> Option<OutputError> {
-        self.rrd.as_ref().and_then(|f| f.error())
+        self.stream.output_error()
     }
 
     /// Checks that the .rrd file being written is still on disk.
     pub fn check_outputs(&self) -> Option<OutputError> {
-        self.rrd.as_ref().and_then(|f| f.check())
+        self.stream.check_outputs()
     }
 
     /// Logs the outcome and `stats_md`, commits the file (footer, sync, rename) and keeps the
@@ -181,30 +249,7 @@ impl Viewer {
             errors.push(e.to_string());
         }
         self.scene = None;
-        let rrd = match self.rrd.take() {
-            Some(file) => commit_file(&self.rec, &file)
-                .map_err(|e| errors.push(e.to_string()))
-                .ok(),
-            None => {
-                let _ = self.rec.flush_with_timeout(FLUSH_LIMIT);
-                None
-            }
-        };
-        let connect = self.connect_report();
-        let mut notes = self.notes;
-        if let Some(c) = &connect {
-            notes.extend(connect_note(c, rrd.is_some()));
-        }
-        let server = (self.serving && errors.is_empty()).then(|| LiveServer {
-            rec: self.rec,
-            _web: self.web,
-        });
-        ViewerReport {
-            rrd,
-            connect,
-            server,
-            notes,
-        }
+        self.stream.finish(errors)
     }
 }
 

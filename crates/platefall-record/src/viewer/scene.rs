@@ -16,11 +16,11 @@ use super::layout::*;
 use super::polar::{polar_axes, polar_curves};
 use super::section::SectionDrawing;
 use super::statics::{log_static, window_reach};
-use super::text::{document, summary_markdown};
+use super::text::{document, outcome_line, summary_markdown};
 use super::wake::WakeScene;
 use crate::messages::{RunInfo, RunOutcome};
 use crate::options::RecordOptions;
-use platefall_core::sim::{FieldSnapshot, RunStatus, StepSample};
+use platefall_core::sim::{FieldSnapshot, StepSample};
 use platefall_post::{FieldPainter, ImageGrid, PainterOptions, SnapshotFields};
 
 /// All logging state of one run.
@@ -361,12 +361,7 @@ impl Scene {
             c.log(&self.rec)?;
         }
         self.strobe.log(&self.rec)?;
-        let (level, line) = match &outcome.status {
-            RunStatus::Completed => (TextLogLevel::INFO, "completed".to_string()),
-            RunStatus::Diverged(msg) => (TextLogLevel::ERROR, format!("diverged: {msg}")),
-            RunStatus::Interrupted => (TextLogLevel::WARN, "interrupted (Ctrl-C)".to_string()),
-            RunStatus::OutputFailed(msg) => (TextLogLevel::ERROR, format!("output failed: {msg}")),
-        };
+        let (level, line) = outcome_line(&outcome.status);
         self.status(step, t, level, &line)?;
         self.rec.log_static(
             paths::SUMMARY,

@@ -2,7 +2,9 @@
 use crate::messages::{RunInfo, RunOutcome};
 use crate::options::RecordOptions;
 use crate::provenance::RecordedInvocation;
+use platefall_core::sim::RunStatus;
 use platefall_post::ImageGrid;
+use rerun::components::TextLogLevel;
 use rerun::TextDocument;
 
 /// A markdown document for the viewer, in [`viewer_text`].
@@ -100,6 +102,16 @@ pub(super) fn invocation_json(info: &RunInfo) -> String {
     };
     // (Cannot fail for plain data.)
     serde_json::to_string_pretty(&recorded).unwrap_or_default()
+}
+
+/// The status line's level and text for how a run ended.
+pub(super) fn outcome_line(status: &RunStatus) -> (&'static str, String) {
+    match status {
+        RunStatus::Completed => (TextLogLevel::INFO, "completed".to_string()),
+        RunStatus::Diverged(msg) => (TextLogLevel::ERROR, format!("diverged: {msg}")),
+        RunStatus::Interrupted => (TextLogLevel::WARN, "interrupted (Ctrl-C)".to_string()),
+        RunStatus::OutputFailed(msg) => (TextLogLevel::ERROR, format!("output failed: {msg}")),
+    }
 }
 
 /// The summary document: the status line, the statistics, the report and the summary JSON.
