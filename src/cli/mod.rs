@@ -33,7 +33,9 @@ mod shape_args;
 mod shell;
 mod signals;
 mod span_arg;
+mod span_resume;
 mod span_run;
+mod span_steps;
 mod sweep_args;
 mod sweep_cases;
 

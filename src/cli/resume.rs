@@ -19,7 +19,7 @@ use crate::exit::Exit;
 use crate::version::program_and_commit;
 use crate::version::program_version as version;
 use platefall_core::sim::{CaseKind, Simulation, ValidatedConfig};
-use platefall_record::checkpoint::{read_checkpoint, Checkpoint, ResumeInfo};
+use platefall_record::checkpoint::{read_checkpoint, Checkpoint, ResumeInfo, RunState};
 use platefall_record::messages::RunInfo;
 use platefall_record::provenance::Invocation;
 use platefall_record::RecordOptions;
@@ -58,21 +58,25 @@ pub enum ResumeRefusal {
 pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let given_every = args.checkpoint.given_every()?;
     let mut ckpt = read_checkpoint(&args.file, &version())?;
-    if let Some(d) = args.perturb_omega {
-        branch::own_checkpoint(&args.file, &args.checkpoint_out())?;
-        branch::perturb_omega(&mut ckpt.sim, d)?;
-    }
     let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
         file: args.file.clone(),
         why: e.kind().to_string(),
     })?;
+    if let RunState::Span(state) = ckpt.sim {
+        let (resume, state) = (ckpt.resume, *state);
+        return super::span_resume::resume_span(args, &cmd.command, resume, state);
+    }
+    if let (Some(d), Some(sim)) = (args.perturb_omega, ckpt.sim.planar_mut()) {
+        branch::own_checkpoint(&args.file, &args.checkpoint_out())?;
+        branch::perturb_omega(sim, d)?;
+    }
     let Some((solver, record)) = cmd.command.case_args() else {
         anyhow::bail!(ResumeRefusal::CommandLine {
             file: args.file.clone(),
             why: "not a case subcommand".into()
         });
     };
-    let config = resumed_config(&cmd.command, &ckpt, args)?;
+    let config = resumed_config(&cmd.command, &ckpt.resume, args)?;
     let mut info = ckpt.resume.clone();
     (info.t_end, info.turns) = (config.time.t_end, config.time.turns);
     if let Some(turn) = args.average_from_turn {
@@ -85,15 +89,13 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     // (The continuation's own invocation: `platefall resume FILE`.)
     let invocation = Invocation::of_this_process(program_and_commit(), Vec::new());
     let run_info = RunInfo::new(&config, command_line(), version()).with_invocation(invocation);
-    let t = ckpt.sim.flow.t;
-    let (sim, history) = Simulation::restore(config, ckpt.sim)?;
+    let t = ckpt.sim.t();
+    let RunState::Planar(saved) = ckpt.sim else {
+        anyhow::bail!("checkpoint {}: not a 2-D run's", args.file.display());
+    };
+    let (sim, history) = Simulation::restore(config, saved)?;
     if sim.finished() {
-        let end = match (args.t_end, args.turns) {
-            (Some(te), _) => format!("--t-end {te}"),
-            (None, Some(n)) => format!("--turns {n}"),
-            (None, None) => "the run's end".into(),
-        };
-        anyhow::bail!(ResumeRefusal::AlreadyOver { end, t });
+        anyhow::bail!(already_over(args, t));
     }
     let path = args.checkpoint_out();
     let started = Started {
@@ -108,20 +110,30 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     execute(started, run_info, &interrupts)
 }
 
+/// The refusal of a checkpoint at time `t` that the end asked for has passed.
+pub(super) fn already_over(args: &ResumeArgs, t: f64) -> ResumeRefusal {
+    let end = match (args.t_end, args.turns) {
+        (Some(te), _) => format!("--t-end {te}"),
+        (None, Some(n)) => format!("--turns {n}"),
+        (None, None) => "the run's end".into(),
+    };
+    ResumeRefusal::AlreadyOver { end, t }
+}
+
 /// The run description: the checkpoint's command line rebuilt, checked against the checkpoint,
 /// with the end asked for.
-fn resumed_config(
+pub(super) fn resumed_config(
     cmd: &Command,
-    ckpt: &Checkpoint,
+    resume: &ResumeInfo,
     args: &ResumeArgs,
 ) -> anyhow::Result<ValidatedConfig> {
     let config = run_config(cmd)?;
-    if serde_json::to_string_pretty(&config)? != ckpt.resume.config_json {
+    if serde_json::to_string_pretty(&config)? != resume.config_json {
         anyhow::bail!(ResumeRefusal::ConfigChanged(args.file.clone()));
     }
     let mut c = config.config().clone();
-    c.time.t_end = args.t_end.unwrap_or(ckpt.resume.t_end);
-    c.time.turns = args.turns.or(ckpt.resume.turns);
+    c.time.t_end = args.t_end.unwrap_or(resume.t_end);
+    c.time.turns = args.turns.or(resume.turns);
     c.time.average_from_turn = args.average_from_turn.unwrap_or(c.time.average_from_turn);
     Ok(c.validate().map_err(super::flags::ArgError::from)?)
 }
@@ -136,7 +148,7 @@ fn resumed_outputs(
     args: &ResumeArgs,
     kind: CaseKind,
 ) -> anyhow::Result<RecordOptions> {
-    let steps = ckpt.sim.flow.steps;
+    let steps = ckpt.sim.steps();
     let mut r = record.clone();
     // A branch (an ensemble member) writes only the outputs it names (branch.rs).
     let branch = args.perturb_omega.is_some();

@@ -293,7 +293,7 @@ fn solve(
 
 /// The exit code of a finished run, with its one-line messages on stderr; `checkpointed`: the
 /// checkpoint a stopped run wrote.
-fn exit_code(
+pub(super) fn exit_code(
     status: &RunStatus,
     summary: &Summary,
     failures: &[String],
@@ -383,7 +383,7 @@ impl Observer for Forward<'_> {
 
 /// The checkpoint file: `--checkpoint`, else beside the CSV, the recording or the summary, else
 /// `<case>.ckpt`.
-fn checkpoint_path(
+pub(super) fn checkpoint_path(
     args: &CheckpointArgs,
     record: &RecordArgs,
     summary: Option<&Path>,
