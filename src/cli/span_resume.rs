@@ -11,11 +11,12 @@ use super::command::Command;
 use super::resume::{already_over, resumed_config, ResumeRefusal};
 use super::resume_args::ResumeArgs;
 use super::signals::Interrupts;
-use super::span_run::{go, span_of, Outputs, SpanStart};
+use super::span_run::{csv_header, go, span_of, Outputs, SpanStart};
 use crate::exit::Exit;
 use crate::version::{program_and_commit, program_version as version};
 use platefall_core::sim::turns_done;
 use platefall_record::checkpoint::{ResumeInfo, SpanRun, SpanState};
+use platefall_record::csv3::check_prefix3;
 use platefall_record::provenance::Invocation;
 
 /// Goes on with the 3-D run of `cmd` (the checkpoint's command line) from `state`.
@@ -59,8 +60,11 @@ pub(super) fn resume_span(
         (None, _, Some(from)) => anyhow::bail!(ResumeRefusal::CsvFromWithoutCsv(from.clone())),
         _ => None,
     };
-    let out = Outputs::resume(csv_pair, cmd, cells, &state)
-        .map_err(|e| ResumeRefusal::Csv(format!("{e:#}")))?;
+    if let Some((_, earlier)) = csv_pair {
+        check_prefix3(earlier, csv_header(cmd), state.steps())
+            .map_err(|why| ResumeRefusal::Csv(why.to_string()))?;
+    }
+    let out = Outputs::resume(csv_pair, cmd, cells, &state)?;
     let abs = |p: &Option<PathBuf>| p.as_deref().map(std::path::absolute).transpose();
     (info.csv, info.summary) = (abs(&csv)?, abs(&summary)?);
     info.every = given_every.or(info.every);

@@ -82,15 +82,15 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
             check_writable(p, false).map_err(|r| anyhow::anyhow!("{flag} {}: {r}", p.display()))?;
         }
     }
+    let checkpoints = match solver.checkpoint.enabled() {
+        true => Some(checkpointer(&config, solver, record)?),
+        false => None,
+    };
     if !record.no_save {
         eprintln!(
             "no recording: a 3-D run writes no .rrd yet (--csv and --summary hold its results)"
         );
     }
-    let checkpoints = match solver.checkpoint.enabled() {
-        true => Some(checkpointer(&config, solver, record)?),
-        false => None,
-    };
     let interrupts = Interrupts::install()?;
     let start = SpanStart {
         free: matches!(cmd, Command::Free(_)),
@@ -106,7 +106,7 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
     go(start, &interrupts)
 }
 
-/// The 3-D run of `config` with `span` and the solver options' grid, and its cells (printed).
+/// The 3-D run of `config` with `span` and the solver options' grid, and its cells.
 pub(super) fn span_of<'a>(
     config: &'a RunConfig,
     solver: &SolverArgs,
@@ -115,10 +115,6 @@ pub(super) fn span_of<'a>(
     let (limit, _) = memory_limit(&solver.limits.max_memory)?;
     let run = Run3::new(config, span, solver.extent(), solver.growth(), limit);
     let cells = Grid3::new(&run.grid)?.cells();
-    eprintln!(
-        "3-D grid: {cells} cells, about {:.2} GB",
-        cells as f64 * BYTES_PER_CELL / 1e9
-    );
     Ok((run, cells))
 }
 
@@ -177,6 +173,11 @@ pub(super) struct SpanStart<'a> {
 /// Steps a 3-D run to its end or a stop, writes the checkpoint at a stop (and, with a cadence,
 /// at the end), then the outputs; the exit code says how it ended.
 pub(super) fn go(mut s: SpanStart, interrupts: &Interrupts) -> anyhow::Result<Exit> {
+    let cells = s.out.cells;
+    eprintln!(
+        "3-D grid: {cells} cells, about {:.2} GB",
+        cells as f64 * BYTES_PER_CELL / 1e9
+    );
     let pool = crate::pool::pool(s.threads)?;
     let clock = Instant::now();
     let mut ctl = Control {
