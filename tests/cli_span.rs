@@ -196,7 +196,11 @@ fn a_flight_stopped_with_checkpoints_and_resumed_writes_the_uninterrupted_runs_o
 fn a_flight_stops_after_its_turns() {
     let dir = scratch("turns");
     let csv = dir.join("t.csv");
-    let args = [&FLIGHT[..], &["--t-end", "3", "--turns", "0.05", "--no-save"]].concat();
+    let args = [
+        &FLIGHT[..],
+        &["--t-end", "3", "--turns", "0.05", "--no-save"],
+    ]
+    .concat();
     let (code, _, err) = platefall(&[&args[..], &["--csv", csv.to_str().unwrap()]].concat());
     assert_eq!(code, 0, "{err}");
     let (_, rows) = table(&csv);
@@ -205,5 +209,9 @@ fn a_flight_stops_after_its_turns() {
     let turned = |r: &Vec<f64>| (r[11] - released).abs() / std::f64::consts::TAU;
     let (last, before) = (&rows[rows.len() - 1], &rows[rows.len() - 2]);
     assert!(last[0] < 2.9, "stopped before t_end: t = {}", last[0]);
-    assert!(turned(last) >= 0.05 && turned(before) < 0.05, "{}", turned(last));
+    assert!(
+        turned(last) >= 0.05 && turned(before) < 0.05,
+        "{}",
+        turned(last)
+    );
 }

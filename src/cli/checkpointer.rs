@@ -87,7 +87,7 @@ impl Checkpointer {
         logger: &Logger,
     ) -> anyhow::Result<()> {
         logger.flush_csv()?;
-        self.write_state(RunState::Planar(sim.save(history)))
+        self.write_state(RunState::Planar(Box::new(sim.save(history))))
     }
 
     /// Writes a checkpoint of `state` (its outputs' rows up to it already written).

@@ -93,7 +93,7 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let RunState::Planar(saved) = ckpt.sim else {
         anyhow::bail!("checkpoint {}: not a 2-D run's", args.file.display());
     };
-    let (sim, history) = Simulation::restore(config, saved)?;
+    let (sim, history) = Simulation::restore(config, *saved)?;
     if sim.finished() {
         anyhow::bail!(already_over(args, t));
     }

@@ -312,7 +312,13 @@ fn finish(
         cells: out.cells,
         recirculation_length: None,
     };
-    let mut sum = summarize3(run.config, &rec, out.lateral, &out.attitude, ended.wall_seconds);
+    let mut sum = summarize3(
+        run.config,
+        &rec,
+        out.lateral,
+        &out.attitude,
+        ended.wall_seconds,
+    );
     sum.three.span = Some(run.grid.span);
     sum.three.cells_3d = out.cells;
     let text = super::provenance::with_version(&report3(run.config, &sum), invocation);
@@ -331,5 +337,10 @@ fn finish(
     }
     print!("{text}");
     let saved = ended.checkpoint.as_deref();
-    Ok(super::run::exit_code(&status, &sum.planar, &failures, saved))
+    Ok(super::run::exit_code(
+        &status,
+        &sum.planar,
+        &failures,
+        saved,
+    ))
 }

@@ -17,9 +17,9 @@ use platefall_record::checkpoint::{RunState, SpanRun, SpanState};
 /// What moves in a 3-D run.
 pub(super) enum Mover {
     /// A static or forced case's flow.
-    Flow(FlowSolver3),
+    Flow(Box<FlowSolver3>),
     /// A free case's flight, its unwrapped pitch and the pitch at the release.
-    Flight(Flight3, f64, Option<f64>),
+    Flight(Box<Flight3>, f64, Option<f64>),
 }
 
 impl Mover {
@@ -27,14 +27,21 @@ impl Mover {
     pub(super) fn new(run: &Run3, free: bool, restored: Option<&SpanRun>) -> Result<Mover, Stop> {
         let mut mover = if free {
             let card = PhysicalPlate6::card().nondimensional()?;
-            Mover::Flight(run.flight(card)?, 0.0, None)
+            Mover::Flight(Box::new(run.flight(card)?), 0.0, None)
         } else {
-            Mover::Flow(run.flow()?)
+            Mover::Flow(Box::new(run.flow()?))
         };
         match (&mut mover, restored) {
             (_, None) => {}
             (Mover::Flow(flow), Some(SpanRun::Prescribed(s))) => flow.restore_state(s)?,
-            (Mover::Flight(f, p, th), Some(SpanRun::Flight { flight, pitch, theta_release })) => {
+            (
+                Mover::Flight(f, p, th),
+                Some(SpanRun::Flight {
+                    flight,
+                    pitch,
+                    theta_release,
+                }),
+            ) => {
                 f.restore(flight)?;
                 (*p, *th) = (*pitch, *theta_release);
             }
@@ -46,9 +53,9 @@ impl Mover {
     /// The state between two steps.
     pub(super) fn save(&self) -> SpanRun {
         match self {
-            Mover::Flow(flow) => SpanRun::Prescribed(flow.save_state()),
+            Mover::Flow(flow) => SpanRun::Prescribed(Box::new(flow.save_state())),
             Mover::Flight(f, pitch, theta_release) => SpanRun::Flight {
-                flight: f.save(),
+                flight: Box::new(f.save()),
                 pitch: *pitch,
                 theta_release: *theta_release,
             },
@@ -56,7 +63,12 @@ impl Mover {
     }
 
     /// Steps to the end (or to a stop); whether the run was stopped before it.
-    pub(super) fn run(&mut self, run: &Run3, out: &mut Outputs, ctl: &mut Control) -> Result<bool, Stop> {
+    pub(super) fn run(
+        &mut self,
+        run: &Run3,
+        out: &mut Outputs,
+        ctl: &mut Control,
+    ) -> Result<bool, Stop> {
         match self {
             Mover::Flow(flow) => prescribe(run, flow, out, ctl),
             Mover::Flight(f, pitch, th) => fly(run, (f, pitch, th), out, ctl),
@@ -137,7 +149,7 @@ fn prescribe(
             return Err(Stop::Output(e));
         }
         if due {
-            ctl.checkpoint(SpanRun::Prescribed(flow.save_state()), out)?;
+            ctl.checkpoint(SpanRun::Prescribed(Box::new(flow.save_state())), out)?;
         }
         if flow.t() >= t_end {
             return Ok(false);
@@ -170,7 +182,7 @@ fn fly(
         keep6(out, &s, *pitch)?;
         if ctl.after_step(s.t, s.step) {
             let state = SpanRun::Flight {
-                flight: flight.save(),
+                flight: Box::new(flight.save()),
                 pitch: *pitch,
                 theta_release: *theta_release,
             };

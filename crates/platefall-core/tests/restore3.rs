@@ -24,7 +24,13 @@ fn solver(n: usize, span: Span, frame: Frame3) -> FlowSolver3 {
         re: 200.0,
         ..FlowParams3::default()
     };
-    FlowSolver3::new(Grid3::new(&spec).unwrap(), params, OuterBc3::FarField, frame).unwrap()
+    FlowSolver3::new(
+        Grid3::new(&spec).unwrap(),
+        params,
+        OuterBc3::FarField,
+        frame,
+    )
+    .unwrap()
 }
 
 const FORCED: Case = Case::Forced {
@@ -56,7 +62,12 @@ fn a_restored_prescribed_run_goes_on_bit_for_bit() {
     let mut resumed = solver(8, Span::Finite(1.0), frame);
     resumed.restore_state(&first.save_state()).unwrap();
     let tail = forced(&mut resumed, None);
-    assert!(head.len() == 4 && tail.len() > 2, "{} + {}", head.len(), tail.len());
+    assert!(
+        head.len() == 4 && tail.len() > 2,
+        "{} + {}",
+        head.len(),
+        tail.len()
+    );
     assert_eq!([head, tail].concat(), all);
     assert_eq!(resumed.save_state(), straight.save_state());
 }
@@ -89,7 +100,10 @@ fn steps(f: &mut Flight3, n: usize) -> Vec<Sample6> {
 fn a_restored_flight_goes_on_bit_for_bit_held_or_released() {
     let mut straight = flight();
     let all = steps(&mut straight, 8);
-    assert!(all[0].t < 0.1 && all[7].t > 0.1, "the release falls inside the run");
+    assert!(
+        all[0].t < 0.1 && all[7].t > 0.1,
+        "the release falls inside the run"
+    );
     for k in [1, 5] {
         let mut first = flight();
         let head = steps(&mut first, k);

@@ -72,7 +72,7 @@ pub struct Checkpoint {
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum RunState {
     /// A 2-D run.
-    Planar(SimState),
+    Planar(Box<SimState>),
     /// A 3-D run (`--span`).
     Span(Box<SpanState>),
 }
@@ -81,7 +81,7 @@ impl RunState {
     /// The 2-D run's state, if it is one.
     pub fn planar(&self) -> Option<&SimState> {
         match self {
-            RunState::Planar(s) => Some(s),
+            RunState::Planar(s) => Some(s.as_ref()),
             RunState::Span(_) => None,
         }
     }
@@ -89,7 +89,7 @@ impl RunState {
     /// See [`planar`](Self::planar).
     pub fn planar_mut(&mut self) -> Option<&mut SimState> {
         match self {
-            RunState::Planar(s) => Some(s),
+            RunState::Planar(s) => Some(s.as_mut()),
             RunState::Span(_) => None,
         }
     }
@@ -310,7 +310,7 @@ mod tests {
                 recording_id: None,
                 every: Some(1.0),
             },
-            sim: RunState::Planar(sim.save(&history)),
+            sim: RunState::Planar(Box::new(sim.save(&history))),
         }
     }
 

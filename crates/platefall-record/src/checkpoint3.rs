@@ -24,11 +24,11 @@ pub struct SpanState {
 #[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum SpanRun {
     /// A static or forced case: the flow alone.
-    Prescribed(FlowState3),
+    Prescribed(Box<FlowState3>),
     /// A free case: the flight.
     Flight {
         /// The flow and the body.
-        flight: FlightState,
+        flight: Box<FlightState>,
         /// The pitch, unwrapped.
         pitch: f64,
         /// The pitch at the release (None before it).

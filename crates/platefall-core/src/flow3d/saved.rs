@@ -83,7 +83,11 @@ impl FlowSolver3 {
         let lengths = |a: &[Vec<f64>; 3]| a.iter().map(Vec::len).collect::<Vec<_>>();
         for (what, saved, ours) in [
             ("the velocity", lengths(&s.vel), lengths(&self.vel)),
-            ("the old right-hand side", lengths(&s.h_old), lengths(&self.h_old)),
+            (
+                "the old right-hand side",
+                lengths(&s.h_old),
+                lengths(&self.h_old),
+            ),
             ("the pressure", vec![s.p.len()], vec![self.p.len()]),
         ] {
             if saved != ours {
