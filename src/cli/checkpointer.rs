@@ -3,6 +3,10 @@
 //! ([`Simulation::save`], or a 3-D run's, `span_checkpoint.rs`); the file from the record crate
 //! ([`write_checkpoint`]).
 use std::path::{Path, PathBuf};
+
+use super::args::CheckpointArgs;
+use super::record_args::RecordArgs;
+use platefall_core::sim::CaseKind;
 use std::time::Instant;
 
 use platefall_core::sim::{History, Simulation};
@@ -114,4 +118,30 @@ impl Checkpointer {
             self.seconds
         )
     }
+}
+
+/// The checkpoint file: `--checkpoint`, else beside the CSV, the recording or the summary, else
+/// `<case>.ckpt`.
+pub fn checkpoint_path(
+    args: &CheckpointArgs,
+    record: &RecordArgs,
+    summary: Option<&Path>,
+    case: CaseKind,
+) -> PathBuf {
+    if let Some(p) = &args.checkpoint {
+        return p.clone();
+    }
+    let save = (!record.no_save).then(|| {
+        record
+            .save
+            .clone()
+            .unwrap_or_else(|| RecordArgs::default_save_path(case))
+    });
+    record
+        .csv
+        .clone()
+        .or(save)
+        .or(summary.map(Path::to_path_buf))
+        .map(|p| p.with_extension("ckpt"))
+        .unwrap_or_else(|| PathBuf::from(format!("{case}.ckpt")))
 }

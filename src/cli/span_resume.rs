@@ -8,10 +8,11 @@ use std::path::PathBuf;
 
 use super::checkpointer::Checkpointer;
 use super::command::Command;
-use super::resume::{already_over, resumed_config, ResumeRefusal};
 use super::resume_args::ResumeArgs;
+use super::resume_checks::{already_over, resumed_config, ResumeRefusal};
 use super::signals::Interrupts;
-use super::span_run::{csv_header, go, span_of, Outputs, SpanStart};
+use super::span_outputs::{csv_header, Outputs};
+use super::span_run::{go, span_of, SpanStart};
 use crate::exit::Exit;
 use crate::version::{program_and_commit, program_version as version};
 use platefall_core::sim::turns_done;

@@ -14,17 +14,17 @@ use super::limits::memory_limit;
 use super::record_args::RecordArgs;
 use super::shape_args::ShapeKind;
 use super::signals::{Interrupts, Phase};
+use super::span_outputs::{Outputs, Stop};
 use super::span_steps::{Control, Mover};
 use crate::exit::Exit;
 use crate::version::program_version as version;
 use platefall_core::flow3d::{Grid3, Span, BYTES_PER_CELL};
-use platefall_core::sim::{History, RunConfig, RunRecord, RunStatus, SimError, StepSample};
-use platefall_core::sim3::{Flight3Error, Run3};
-use platefall_post::summary3::{lateral_sample, report3, summarize3, Attitude};
-use platefall_record::checkpoint::{ResumeInfo, SpanRun, SpanState};
-use platefall_record::csv3::{Csv3Writer, CSV3_HEADER, CSV6_HEADER};
+use platefall_core::sim::{RunConfig, RunRecord, RunStatus, SimError};
+use platefall_core::sim3::Run3;
+use platefall_post::summary3::{report3, summarize3};
+use platefall_record::checkpoint::{ResumeInfo, SpanRun};
 use platefall_record::files::check_writable;
-use platefall_record::output::{write_atomically, OutputError};
+use platefall_record::output::write_atomically;
 use platefall_record::provenance::Invocation;
 
 /// The first option given that a 3-D run cannot honour yet.
@@ -132,7 +132,8 @@ fn checkpointer(
     };
     let summary = solver.summary.as_deref();
     let kind = config.case.kind();
-    let path = super::run::checkpoint_path(&solver.checkpoint, &no_recording, summary, kind);
+    let path =
+        super::checkpointer::checkpoint_path(&solver.checkpoint, &no_recording, summary, kind);
     let abs = |o: Option<&Path>| o.map(std::path::absolute).transpose();
     let info = ResumeInfo {
         argv: std::env::args().collect(),
@@ -217,78 +218,6 @@ pub(super) fn go(mut s: SpanStart, interrupts: &Interrupts) -> anyhow::Result<Ex
     finish(&s.run, s.out, ended, s.summary.as_deref(), &s.invocation)
 }
 
-/// What a 3-D run keeps of its steps.
-pub(super) struct Outputs {
-    pub(super) csv: Option<Csv3Writer>,
-    pub(super) planar: History,
-    pub(super) lateral: History,
-    pub(super) attitude: Vec<Attitude>,
-    cells: usize,
-}
-
-/// The header of the CSV of `cmd`'s 3-D run.
-pub(super) fn csv_header(cmd: &Command) -> &'static str {
-    match cmd {
-        Command::Free(_) => CSV6_HEADER,
-        _ => CSV3_HEADER,
-    }
-}
-
-impl Outputs {
-    fn new(csv: Option<&Path>, cmd: &Command, cells: usize) -> anyhow::Result<Outputs> {
-        let header = csv_header(cmd);
-        Ok(Outputs {
-            csv: csv.map(|p| Csv3Writer::create(p, header)).transpose()?,
-            planar: History::default(),
-            lateral: History::default(),
-            attitude: Vec::new(),
-            cells,
-        })
-    }
-
-    /// The outputs of a run resumed from `state`: the CSV (if any) starts with the first rows
-    /// of `earlier`, up to the checkpoint.
-    pub(super) fn resume(
-        csv: Option<(&Path, &Path)>,
-        cmd: &Command,
-        cells: usize,
-        state: &SpanState,
-    ) -> anyhow::Result<Outputs> {
-        let header = csv_header(cmd);
-        let rows = state.steps();
-        let resume = |(path, earlier)| Csv3Writer::resume(path, header, earlier, rows);
-        Ok(Outputs {
-            csv: csv.map(resume).transpose()?,
-            planar: state.planar.clone(),
-            lateral: state.lateral.clone(),
-            attitude: state.attitude.clone(),
-            cells,
-        })
-    }
-
-    /// Keeps a step's planar and lateral samples.
-    pub(super) fn keep(&mut self, planar: StepSample, c: [f64; 3]) {
-        self.planar.push(planar);
-        self.lateral.push(lateral_sample(&planar, c[0], c[1], c[2]));
-    }
-}
-
-/// Why a 3-D run stopped before its end.
-pub(super) enum Stop {
-    /// The flow or the flight failed.
-    Flow(Flight3Error),
-    /// The CSV could not be written.
-    Output(OutputError),
-    /// A checkpoint could not be written (or does not fit the run).
-    Checkpoint(String),
-}
-
-impl<E: Into<Flight3Error>> From<E> for Stop {
-    fn from(e: E) -> Stop {
-        Stop::Flow(e.into())
-    }
-}
-
 /// How a run ended: its status, the seconds it stepped, the checkpoint a stop wrote.
 struct Ended {
     status: RunStatus,
@@ -337,7 +266,7 @@ fn finish(
     }
     print!("{text}");
     let saved = ended.checkpoint.as_deref();
-    Ok(super::run::exit_code(
+    Ok(super::outcome::exit_code(
         &status,
         &sum.planar,
         &failures,

@@ -6,7 +6,7 @@ use std::ops::ControlFlow;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::checkpointer::Checkpointer;
-use super::span_run::{Outputs, Stop};
+use super::span_outputs::{Outputs, Stop};
 use platefall_core::body::six::PhysicalPlate6;
 use platefall_core::flow3d::FlowSolver3;
 use platefall_core::sim::turns_done;
