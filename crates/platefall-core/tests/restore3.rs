@@ -3,35 +3,14 @@
 //! uninterrupted run takes; a state of another grid is refused.
 use std::ops::ControlFlow;
 
+mod common3;
+use common3::solver;
+
 use platefall_core::body::six::{Constraint6, PhysicalPlate6, RigidBody6, State6};
 use platefall_core::body::AbStart;
-use platefall_core::flow3d::{
-    Flow3Error, FlowParams3, FlowSolver3, Frame3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
-};
+use platefall_core::flow3d::{Flow3Error, FlowSolver3, Span};
 use platefall_core::sim::Case;
 use platefall_core::sim3::{frame_of, planar_frame, run_prescribed, Flight3, Sample3, Sample6};
-
-fn solver(n: usize, span: Span, frame: Frame3) -> FlowSolver3 {
-    let spec = GridSpec3 {
-        resolution: n,
-        thickness: 0.125,
-        span,
-        extent: [2.0; 3],
-        stretch: Stretch3::GrowthCap(1.2),
-        memory_limit: 1e9,
-    };
-    let params = FlowParams3 {
-        re: 200.0,
-        ..FlowParams3::default()
-    };
-    FlowSolver3::new(
-        Grid3::new(&spec).unwrap(),
-        params,
-        OuterBc3::FarField,
-        frame,
-    )
-    .unwrap()
-}
 
 const FORCED: Case = Case::Forced {
     omega: 2.0,
