@@ -1,10 +1,13 @@
 //! `--span` on the command line (docs/three-d.md "Cases"): a periodic span gives the 2-D plate's
 //! loads per unit span, a finite span has no side force, roll or yaw by its mirror symmetry in z,
-//! the options a 3-D run cannot honour are refused in one line, and a 3-D flight writes its CSV
-//! and summary.
+//! the options a 3-D run cannot honour are refused in one line, a 3-D flight writes its CSV
+//! and summary, stops after `--turns`, and stopped with a checkpoint and resumed writes the
+//! same CSV and summary as the run straight through (docs/three-d.md "On the command line").
 use std::path::Path;
 
+mod checkpoint_common;
 mod cli_common;
+use checkpoint_common::{assert_same_outputs, run_full, run_stopped};
 use cli_common::{platefall, scratch};
 
 /// The CSV's header and its data rows (the trailer skipped).
@@ -90,16 +93,12 @@ fn a_finite_span_has_no_side_force_roll_or_yaw() {
 #[test]
 fn options_a_three_dimensional_run_cannot_honour_are_refused_in_one_line() {
     let dir = scratch("refused");
-    let cases: [(&[&str], &str); 5] = [
+    let cases: [(&[&str], &str); 4] = [
         (&["static", "--span", "2", "--shape", "ellipse"], "--shape"),
         (&["pinned", "--span", "2"], "pinned --span"),
         (
             &["static", "--span", "2", "--vtk", dir.to_str().unwrap()],
             "--vtk",
-        ),
-        (
-            &["static", "--span", "2", "--checkpoint-every", "1"],
-            "--checkpoint-every",
         ),
         (&["free", "--span", "2", "--mass", "1"], "--mass"),
     ];
@@ -163,4 +162,54 @@ fn a_periodic_flight_writes_its_csv_summary_and_recording() {
     assert_eq!(s["case"], "free");
     assert_eq!(s["max_abs_span_y"], 0.0);
     assert!(s["cells_3d"].as_u64().unwrap() > 0 && s["mean_speed"].as_f64().unwrap() > 0.5);
+}
+
+/// The card's flight on a finite span at N = 6, held until t = 0.1.
+const FLIGHT: [&str; 11] = [
+    "free",
+    "--span",
+    "1",
+    "--resolution",
+    "6",
+    "--extent",
+    "2",
+    "--develop",
+    "0.1",
+    "--progress",
+    "off",
+];
+
+#[test]
+fn a_flight_stopped_with_checkpoints_and_resumed_writes_the_uninterrupted_runs_outputs() {
+    // Stopped in the hold (step 5), after the release (23) and again (31), resumed each time
+    // with one and two threads: the CSV byte for byte, the summary but for the wall time.
+    let dir = checkpoint_common::scratch("span-flight");
+    let flight = [&FLIGHT[..], &["--t-end", "0.4"]].concat();
+    run_full(&dir, &flight);
+    run_stopped(&dir, &flight, "0.1", &[5, 23, 31], &["1", "2"]);
+    assert_same_outputs(&dir);
+}
+
+#[test]
+fn a_flight_stops_after_its_turns() {
+    let dir = scratch("turns");
+    let csv = dir.join("t.csv");
+    let args = [
+        &FLIGHT[..],
+        &["--t-end", "3", "--turns", "0.05", "--no-save"],
+    ]
+    .concat();
+    let (code, _, err) = platefall(&[&args[..], &["--csv", csv.to_str().unwrap()]].concat());
+    assert_eq!(code, 0, "{err}");
+    let (_, rows) = table(&csv);
+    // Pitch (column 11) from the first step after the release at t = 0.1.
+    let released = rows.iter().find(|r| r[0] >= 0.1 - 1e-9).unwrap()[11];
+    let turned = |r: &Vec<f64>| (r[11] - released).abs() / std::f64::consts::TAU;
+    let (last, before) = (&rows[rows.len() - 1], &rows[rows.len() - 2]);
+    assert!(last[0] < 2.9, "stopped before t_end: t = {}", last[0]);
+    assert!(
+        turned(last) >= 0.05 && turned(before) < 0.05,
+        "{}",
+        turned(last)
+    );
 }

@@ -1,11 +1,16 @@
 //! Writing a run's checkpoints: at the `--checkpoint-every` cadence, at a stop (SIGTERM, SIGUSR1,
 //! the first Ctrl-C) and, with a cadence, at the end. The state comes from the core
-//! ([`Simulation::save`]); the file from the record crate ([`write_checkpoint`]).
+//! ([`Simulation::save`], or a 3-D run's, `span_checkpoint.rs`); the file from the record crate
+//! ([`write_checkpoint`]).
 use std::path::{Path, PathBuf};
+
+use super::args::CheckpointArgs;
+use super::record_args::RecordArgs;
+use platefall_core::sim::CaseKind;
 use std::time::Instant;
 
 use platefall_core::sim::{History, Simulation};
-use platefall_record::checkpoint::{write_checkpoint, Checkpoint, ResumeInfo};
+use platefall_record::checkpoint::{write_checkpoint, Checkpoint, ResumeInfo, RunState};
 use platefall_record::{Cadence, Logger};
 
 /// The checkpoints of one run.
@@ -59,6 +64,11 @@ impl Checkpointer {
         self.cadence.is_some()
     }
 
+    /// Whether a checkpoint is due at the run's time `t` (then it counts as taken).
+    pub fn due(&mut self, t: f64) -> bool {
+        self.cadence.as_mut().is_some_and(|c| c.due(t))
+    }
+
     /// After a step: writes a checkpoint if one is due at the run's time.
     pub fn after_step(
         &mut self,
@@ -66,8 +76,7 @@ impl Checkpointer {
         history: &History,
         logger: &Logger,
     ) -> anyhow::Result<()> {
-        let t = sim.flow().t();
-        if !self.cadence.as_mut().is_some_and(|c| c.due(t)) {
+        if !self.due(sim.flow().t()) {
             return Ok(());
         }
         self.write(sim, history, logger)
@@ -81,12 +90,17 @@ impl Checkpointer {
         history: &History,
         logger: &Logger,
     ) -> anyhow::Result<()> {
-        let start = Instant::now();
         logger.flush_csv()?;
+        self.write_state(RunState::Planar(Box::new(sim.save(history))))
+    }
+
+    /// Writes a checkpoint of `state` (its outputs' rows up to it already written).
+    pub fn write_state(&mut self, state: RunState) -> anyhow::Result<()> {
+        let start = Instant::now();
         let ckpt = Checkpoint {
             program: self.program.clone(),
             resume: self.info.clone(),
-            sim: sim.save(history),
+            sim: state,
         };
         self.bytes = write_checkpoint(&self.path, &ckpt)?;
         self.written += 1;
@@ -104,4 +118,30 @@ impl Checkpointer {
             self.seconds
         )
     }
+}
+
+/// The checkpoint file: `--checkpoint`, else beside the CSV, the recording or the summary, else
+/// `<case>.ckpt`.
+pub fn checkpoint_path(
+    args: &CheckpointArgs,
+    record: &RecordArgs,
+    summary: Option<&Path>,
+    case: CaseKind,
+) -> PathBuf {
+    if let Some(p) = &args.checkpoint {
+        return p.clone();
+    }
+    let save = (!record.no_save).then(|| {
+        record
+            .save
+            .clone()
+            .unwrap_or_else(|| RecordArgs::default_save_path(case))
+    });
+    record
+        .csv
+        .clone()
+        .or(save)
+        .or(summary.map(Path::to_path_buf))
+        .map(|p| p.with_extension("ckpt"))
+        .unwrap_or_else(|| PathBuf::from(format!("{case}.ckpt")))
 }

@@ -9,7 +9,10 @@
 //! (an ensemble's), `info` and `reproduce` (reading a recording back; `provenance`: what a run
 //! records of how it was started; `shell`: command lines quoted for the shell), `bench_args`,
 //! `args`, `plate_args` and `shape_args` (the case options: solver, plate, section),
-//! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error).
+//! `record_args`, `limits`, `signals`, `flags` (flag names and the argument error). A run's
+//! checkpoints: `checkpointer`; `resume` (going on from one) over `resume_checks`; the 3-D runs
+//! (`--span`): `span_run` over `span_steps` and `span_outputs`, and `span_resume`; `outcome`
+//! (a finished run's exit code).
 mod args;
 mod bench_args;
 mod branch;
@@ -21,6 +24,7 @@ mod ensemble_args;
 mod flags;
 mod info;
 mod limits;
+mod outcome;
 mod plate_args;
 mod provenance;
 mod record_args;
@@ -28,12 +32,17 @@ mod reproduce;
 mod reproduce_args;
 mod resume;
 mod resume_args;
+mod resume_checks;
 mod run;
 mod shape_args;
 mod shell;
 mod signals;
 mod span_arg;
+mod span_outputs;
+mod span_recording;
+mod span_resume;
 mod span_run;
+mod span_steps;
 mod sweep_args;
 mod sweep_cases;
 

@@ -9,70 +9,44 @@ use anyhow::Context as _;
 
 use super::branch;
 use super::checkpointer::Checkpointer;
-use super::command::{parse, Command};
-use super::config::run_config;
+use super::command::parse;
 use super::record_args::RecordArgs;
 use super::resume_args::ResumeArgs;
+use super::resume_checks::{already_over, resumed_config, ResumeRefusal};
 use super::run::{command_line, execute, Started};
 use super::signals::Interrupts;
 use crate::exit::Exit;
 use crate::version::program_and_commit;
 use crate::version::program_version as version;
-use platefall_core::sim::{CaseKind, Simulation, ValidatedConfig};
-use platefall_record::checkpoint::{read_checkpoint, Checkpoint, ResumeInfo};
+use platefall_core::sim::{CaseKind, Simulation};
+use platefall_record::checkpoint::{read_checkpoint, Checkpoint, ResumeInfo, RunState};
 use platefall_record::messages::RunInfo;
 use platefall_record::provenance::Invocation;
 use platefall_record::RecordOptions;
-
-/// Why a checkpoint cannot be resumed as asked (besides a bad file).
-#[derive(Debug, thiserror::Error)]
-pub enum ResumeRefusal {
-    /// The checkpoint's command line no longer describes a case.
-    #[error("checkpoint {}: its command line does not describe a run any more: {why}", .file.display())]
-    CommandLine {
-        /// The checkpoint.
-        file: PathBuf,
-        /// Why.
-        why: String,
-    },
-    /// The command line builds another run description than the checkpoint's.
-    #[error("checkpoint {}: its command line now builds another run than the checkpoint holds (a file it reads changed, or run it from the directory it was started in)", .0.display())]
-    ConfigChanged(PathBuf),
-    /// The earlier CSV does not hold the rows up to the checkpoint.
-    #[error("--csv: cannot resume it: {0}")]
-    Csv(String),
-    /// `--csv-from` for a run that writes no CSV.
-    #[error("--csv-from {}: the run writes no CSV; give --csv FILE too", .0.display())]
-    CsvFromWithoutCsv(PathBuf),
-    /// The run would already be over under the end asked for.
-    #[error("{end}: the checkpoint is at t = {t:.4}; the run would already be over (give a later --t-end or more --turns)")]
-    AlreadyOver {
-        /// The end, e.g. "--t-end 3" or "the run's end".
-        end: String,
-        /// The checkpoint's time.
-        t: f64,
-    },
-}
 
 /// Runs `platefall resume`.
 pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     let given_every = args.checkpoint.given_every()?;
     let mut ckpt = read_checkpoint(&args.file, &version())?;
-    if let Some(d) = args.perturb_omega {
-        branch::own_checkpoint(&args.file, &args.checkpoint_out())?;
-        branch::perturb_omega(&mut ckpt.sim, d)?;
-    }
     let cmd = parse(&ckpt.resume.argv).map_err(|e| ResumeRefusal::CommandLine {
         file: args.file.clone(),
         why: e.kind().to_string(),
     })?;
+    if let RunState::Span(state) = ckpt.sim {
+        let (resume, state) = (ckpt.resume, *state);
+        return super::span_resume::resume_span(args, &cmd.command, resume, state);
+    }
+    if let (Some(d), Some(sim)) = (args.perturb_omega, ckpt.sim.planar_mut()) {
+        branch::own_checkpoint(&args.file, &args.checkpoint_out())?;
+        branch::perturb_omega(sim, d)?;
+    }
     let Some((solver, record)) = cmd.command.case_args() else {
         anyhow::bail!(ResumeRefusal::CommandLine {
             file: args.file.clone(),
             why: "not a case subcommand".into()
         });
     };
-    let config = resumed_config(&cmd.command, &ckpt, args)?;
+    let config = resumed_config(&cmd.command, &ckpt.resume, args)?;
     let mut info = ckpt.resume.clone();
     (info.t_end, info.turns) = (config.time.t_end, config.time.turns);
     if let Some(turn) = args.average_from_turn {
@@ -85,15 +59,13 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     // (The continuation's own invocation: `platefall resume FILE`.)
     let invocation = Invocation::of_this_process(program_and_commit(), Vec::new());
     let run_info = RunInfo::new(&config, command_line(), version()).with_invocation(invocation);
-    let t = ckpt.sim.flow.t;
-    let (sim, history) = Simulation::restore(config, ckpt.sim)?;
+    let t = ckpt.sim.t();
+    let RunState::Planar(saved) = ckpt.sim else {
+        anyhow::bail!("checkpoint {}: not a 2-D run's", args.file.display());
+    };
+    let (sim, history) = Simulation::restore(config, *saved)?;
     if sim.finished() {
-        let end = match (args.t_end, args.turns) {
-            (Some(te), _) => format!("--t-end {te}"),
-            (None, Some(n)) => format!("--turns {n}"),
-            (None, None) => "the run's end".into(),
-        };
-        anyhow::bail!(ResumeRefusal::AlreadyOver { end, t });
+        anyhow::bail!(already_over(args, t));
     }
     let path = args.checkpoint_out();
     let started = Started {
@@ -108,24 +80,6 @@ pub fn run_resume(args: &ResumeArgs) -> anyhow::Result<Exit> {
     execute(started, run_info, &interrupts)
 }
 
-/// The run description: the checkpoint's command line rebuilt, checked against the checkpoint,
-/// with the end asked for.
-fn resumed_config(
-    cmd: &Command,
-    ckpt: &Checkpoint,
-    args: &ResumeArgs,
-) -> anyhow::Result<ValidatedConfig> {
-    let config = run_config(cmd)?;
-    if serde_json::to_string_pretty(&config)? != ckpt.resume.config_json {
-        anyhow::bail!(ResumeRefusal::ConfigChanged(args.file.clone()));
-    }
-    let mut c = config.config().clone();
-    c.time.t_end = args.t_end.unwrap_or(ckpt.resume.t_end);
-    c.time.turns = args.turns.or(ckpt.resume.turns);
-    c.time.average_from_turn = args.average_from_turn.unwrap_or(c.time.average_from_turn);
-    Ok(c.validate().map_err(super::flags::ArgError::from)?)
-}
-
 /// The resumed run's outputs: the run's own (the CSV rewritten with its earlier rows, a
 /// continuation recording), or those given (a branch: only those given); `info` takes them
 /// for the next checkpoint.
@@ -136,7 +90,7 @@ fn resumed_outputs(
     args: &ResumeArgs,
     kind: CaseKind,
 ) -> anyhow::Result<RecordOptions> {
-    let steps = ckpt.sim.flow.steps;
+    let steps = ckpt.sim.steps();
     let mut r = record.clone();
     // A branch (an ensemble member) writes only the outputs it names (branch.rs).
     let branch = args.perturb_omega.is_some();

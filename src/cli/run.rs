@@ -6,21 +6,18 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 
-use super::args::CheckpointArgs;
 use super::checkpointer::Checkpointer;
 use super::command::Command;
 use super::config::{plate_notes, run_config};
 use super::limits::check_limits;
-use super::record_args::RecordArgs;
 use super::signals::{Interrupts, Phase};
 use crate::exit::Exit;
 use crate::version::program_version as version;
 use platefall_core::sim::{
-    CaseKind, FieldSnapshot, History, Observer, RunRecord, RunStatus, Simulation, StepSample,
-    ValidatedConfig,
+    FieldSnapshot, History, Observer, RunRecord, RunStatus, Simulation, StepSample, ValidatedConfig,
 };
 use platefall_post::report::report;
-use platefall_post::summary::{summarize, Summary};
+use platefall_post::summary::summarize;
 use platefall_record::checkpoint::ResumeInfo;
 use platefall_record::messages::{RunInfo, RunOutcome};
 use platefall_record::output::write_atomically;
@@ -127,7 +124,7 @@ pub(super) fn execute(
     if let Some(c) = r.checkpoints.as_ref().filter(|c| c.written > 0) {
         eprintln!("{}", c.report_line());
     }
-    let code = exit_code(&rec.status, &summary, &failures, saved.as_deref());
+    let code = super::outcome::exit_code(&rec.status, &summary, &failures, saved.as_deref());
     if let Some(r) = log_report.filter(|_| rec.status != RunStatus::Interrupted) {
         // --serve keeps the server up for late viewers until Ctrl-C.
         interrupts.set_phase(Phase::Serving);
@@ -204,7 +201,7 @@ fn prepare(cmd: &Command) -> anyhow::Result<Prepared> {
     solver_args.checkpoint.every()?;
     let checkpoint = solver_args.checkpoint.enabled().then(|| {
         let summary = summary_path.as_deref();
-        checkpoint_path(
+        super::checkpointer::checkpoint_path(
             &solver_args.checkpoint,
             record_args,
             summary,
@@ -291,51 +288,6 @@ fn solve(
     })
 }
 
-/// The exit code of a finished run, with its one-line messages on stderr; `checkpointed`: the
-/// checkpoint a stopped run wrote.
-fn exit_code(
-    status: &RunStatus,
-    summary: &Summary,
-    failures: &[String],
-    checkpointed: Option<&Path>,
-) -> Exit {
-    if !failures.is_empty() {
-        let stopped = match status {
-            RunStatus::OutputFailed(_) => {
-                format!("; the run stopped at t = {:.3}", summary.t_reached)
-            }
-            _ => String::new(),
-        };
-        eprintln!(
-            "error: could not write {}{stopped}; nothing incomplete was left at a final name",
-            failures.join("; ")
-        );
-    }
-    match status {
-        RunStatus::Interrupted => eprintln!(
-            "interrupted: the outputs hold the run up to t = {:.3} and say so{}",
-            summary.t_reached,
-            checkpointed.map_or(String::new(), |p| format!(
-                "; `platefall resume {}` goes on from there",
-                p.display()
-            ))
-        ),
-        RunStatus::OutputFailed(msg) if failures.is_empty() => eprintln!("error: {msg}"),
-        RunStatus::Diverged(e) if failures.is_empty() => {
-            eprintln!("error: {e}; try a smaller --cfl or a finer --resolution")
-        }
-        _ => {}
-    }
-    match status {
-        RunStatus::Interrupted if checkpointed.is_some() && failures.is_empty() => {
-            Exit::Checkpointed
-        }
-        RunStatus::Interrupted | RunStatus::OutputFailed(_) => Exit::of_status(status),
-        _ if !failures.is_empty() => Exit::OutputFailed,
-        _ => Exit::of_status(status),
-    }
-}
-
 /// Forwards the solver's output to the logger thread, and writes the checkpoints.
 struct Forward<'a> {
     logger: &'a mut Logger,
@@ -379,32 +331,6 @@ impl Observer for Forward<'_> {
             self.stop.store(true, Ordering::SeqCst);
         }
     }
-}
-
-/// The checkpoint file: `--checkpoint`, else beside the CSV, the recording or the summary, else
-/// `<case>.ckpt`.
-fn checkpoint_path(
-    args: &CheckpointArgs,
-    record: &RecordArgs,
-    summary: Option<&Path>,
-    case: CaseKind,
-) -> PathBuf {
-    if let Some(p) = &args.checkpoint {
-        return p.clone();
-    }
-    let save = (!record.no_save).then(|| {
-        record
-            .save
-            .clone()
-            .unwrap_or_else(|| RecordArgs::default_save_path(case))
-    });
-    record
-        .csv
-        .clone()
-        .or(save)
-        .or(summary.map(Path::to_path_buf))
-        .map(|p| p.with_extension("ckpt"))
-        .unwrap_or_else(|| PathBuf::from(format!("{case}.ckpt")))
 }
 
 /// The command line as typed, quoted where needed.

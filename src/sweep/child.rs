@@ -99,7 +99,7 @@ fn start_of(layout: &Layout, id: &str, last: Option<&CaseStatus>) -> Start {
     else {
         return Start::Fresh;
     };
-    let (csv, steps) = (layout.csv(id), ckpt.sim.flow.steps);
+    let (csv, steps) = (layout.csv(id), ckpt.sim.steps());
     let holds_rows = |p: &Path| platefall_record::check_csv_prefix(p, steps).is_ok();
     if holds_rows(&csv) {
         return Start::Resume {

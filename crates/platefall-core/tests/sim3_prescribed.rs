@@ -3,33 +3,14 @@
 //! in y and z, and the forced case following its law.
 use std::ops::ControlFlow;
 
-use platefall_core::flow3d::{
-    FlowParams3, FlowSolver3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
-};
+mod common3;
+
+use platefall_core::flow3d::{FlowSolver3, Span};
 use platefall_core::sim::Case;
 use platefall_core::sim3::{planar_frame, run_prescribed, Sample3};
 
 fn solver(case: &Case, span: Span) -> FlowSolver3 {
-    let spec = GridSpec3 {
-        resolution: 8,
-        thickness: 0.125,
-        span,
-        extent: [2.0; 3],
-        stretch: Stretch3::GrowthCap(1.2),
-        memory_limit: 1e9,
-    };
-    let params = FlowParams3 {
-        re: 200.0,
-        ..FlowParams3::default()
-    };
-    let frame = planar_frame(&case.prescribed_state(0.0));
-    FlowSolver3::new(
-        Grid3::new(&spec).unwrap(),
-        params,
-        OuterBc3::FarField,
-        frame,
-    )
-    .unwrap()
+    common3::solver(8, span, planar_frame(&case.prescribed_state(0.0)))
 }
 
 fn run(case: Case, span: Span, t_end: f64) -> Vec<Sample3> {

@@ -11,7 +11,7 @@ use platefall_core::flow3d::Span;
 use platefall_core::sim::{History, Quantity, RunConfig, RunRecord, StepSample};
 
 /// One step of a flight's attitude, beyond the planar sample.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, serde::Deserialize)]
 pub struct Attitude {
     /// Time at the end of the step (c/U).
     pub t: f64,

@@ -1,4 +1,5 @@
-//! Checkpoint files: a run's whole state between two steps ([`SimState`]) and what `platefall
+//! Checkpoint files: a run's whole state between two steps ([`RunState`]: a 2-D run's
+//! [`SimState`] or a 3-D run's [`SpanState`]) and what `platefall
 //! resume` needs to go on with it ([`ResumeInfo`]), in one file written like every other output
 //! (temporary name, sync, rename: the previous checkpoint stays valid until the new one is
 //! complete).
@@ -19,13 +20,15 @@ use std::path::{Path, PathBuf};
 use bincode::Options as _;
 use platefall_core::sim::SimState;
 
+pub use super::checkpoint3::{SpanRun, SpanState};
+
 use super::inject;
 use super::output::{remove_orphaned_partials, OutputError, PendingFile};
 
 /// The first eight bytes of every checkpoint.
 pub const MAGIC: &[u8; 8] = b"PFCKPT\r\n";
-/// The layout's version; a file of another one is refused.
-pub const FORMAT_VERSION: u32 = 1;
+/// The layout's version; a file of another one is refused (2: the state of a 2-D or a 3-D run).
+pub const FORMAT_VERSION: u32 = 2;
 /// Bytes after the magic and version: the payload's length and its checksum.
 const TRAILER: usize = 12;
 const HEADER: usize = 12;
@@ -62,7 +65,50 @@ pub struct Checkpoint {
     /// How to go on.
     pub resume: ResumeInfo,
     /// The run's state.
-    pub sim: SimState,
+    pub sim: RunState,
+}
+
+/// A run's state between two steps.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub enum RunState {
+    /// A 2-D run.
+    Planar(Box<SimState>),
+    /// A 3-D run (`--span`).
+    Span(Box<SpanState>),
+}
+
+impl RunState {
+    /// The 2-D run's state, if it is one.
+    pub fn planar(&self) -> Option<&SimState> {
+        match self {
+            RunState::Planar(s) => Some(s.as_ref()),
+            RunState::Span(_) => None,
+        }
+    }
+
+    /// See [`planar`](Self::planar).
+    pub fn planar_mut(&mut self) -> Option<&mut SimState> {
+        match self {
+            RunState::Planar(s) => Some(s.as_mut()),
+            RunState::Span(_) => None,
+        }
+    }
+
+    /// Steps taken.
+    pub fn steps(&self) -> u64 {
+        match self {
+            RunState::Planar(s) => s.flow.steps,
+            RunState::Span(s) => s.steps(),
+        }
+    }
+
+    /// The time.
+    pub fn t(&self) -> f64 {
+        match self {
+            RunState::Planar(s) => s.flow.t,
+            RunState::Span(s) => s.t(),
+        }
+    }
 }
 
 /// Why a checkpoint cannot be read (one line, naming the file).
@@ -264,7 +310,7 @@ mod tests {
                 recording_id: None,
                 every: Some(1.0),
             },
-            sim: sim.save(&history),
+            sim: RunState::Planar(Box::new(sim.save(&history))),
         }
     }
 

@@ -49,15 +49,8 @@ impl CsvWriter {
         let lines = prefix_rows(earlier, rows)
             .map_err(|why| OutputError::new("--csv", path, format!("cannot resume it: {why}")))?;
         let mut w = Self::create(path)?;
-        for line in &lines {
-            writeln!(w.out, "{line}").map_err(|e| w.out.fail(format!("write failed: {e}")))?;
-        }
+        w.last_t = copy_rows(&mut w.out, &lines)?;
         w.rows = rows;
-        w.last_t = lines
-            .last()
-            .and_then(|l| l.split(',').next())
-            .and_then(|t| t.parse().ok())
-            .unwrap_or(0.0);
         Ok(w)
     }
 
@@ -166,15 +159,24 @@ pub fn check_prefix(path: &Path, rows: u64) -> Result<(), CsvPrefixError> {
 /// run killed before it renamed its CSV into place leaves one, without a trailer and often with
 /// half a last line) serves as far as its whole rows go.
 fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, CsvPrefixError> {
+    prefix_rows_of(path, CSV_HEADER, rows)
+}
+
+/// [`prefix_rows`] of a CSV with another `header` (the 3-D CSVs, `crate::csv3`).
+pub(crate) fn prefix_rows_of(
+    path: &Path,
+    header: &str,
+    rows: u64,
+) -> Result<Vec<String>, CsvPrefixError> {
     let file = std::fs::File::open(path).map_err(|error| CsvPrefixError::Unreadable {
         path: path.to_path_buf(),
         error,
     })?;
     let mut reader = std::io::BufReader::new(file);
-    if whole_line(&mut reader).as_deref() != Some(CSV_HEADER) {
+    if whole_line(&mut reader).as_deref() != Some(header) {
         return Err(CsvPrefixError::NotPlatefall(path.to_path_buf()));
     }
-    let columns = CSV_HEADER.split(',').count();
+    let columns = header.split(',').count();
     let mut out = Vec::with_capacity(rows as usize);
     for k in 1..=rows {
         let line = match whole_line(&mut reader) {
@@ -196,6 +198,18 @@ fn prefix_rows(path: &Path, rows: u64) -> Result<Vec<String>, CsvPrefixError> {
         out.push(line);
     }
     Ok(out)
+}
+
+/// Writes `lines` (earlier data rows) to `out`; the time of the last one (0 for none).
+pub(crate) fn copy_rows(out: &mut PendingFile, lines: &[String]) -> Result<f64, OutputError> {
+    for line in lines {
+        writeln!(out, "{line}").map_err(|e| out.fail(format!("write failed: {e}")))?;
+    }
+    Ok(lines
+        .last()
+        .and_then(|l| l.split(',').next())
+        .and_then(|t| t.parse().ok())
+        .unwrap_or(0.0))
 }
 
 /// The next line of `r` without its line break, if it has one (a last line cut short has none).

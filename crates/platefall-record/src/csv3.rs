@@ -5,7 +5,7 @@
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
-use super::csv::trailer;
+use super::csv::{copy_rows, prefix_rows_of, trailer, CsvPrefixError};
 use super::output::{OutputError, PendingFile};
 use platefall_core::flow3d::Coefficients3;
 use platefall_core::sim::RunStatus;
@@ -38,6 +38,32 @@ impl Csv3Writer {
             rows: 0,
             last_t: 0.0,
         })
+    }
+
+    /// Creates the temporary file with `header` and the first `rows` data rows of the CSV at
+    /// `earlier` (a run resumed from a checkpoint after `rows` steps), so the rows that follow
+    /// make the same file as an uninterrupted run. Refused when `earlier` is not such a CSV or
+    /// holds fewer rows.
+    pub fn resume(
+        path: &Path,
+        header: &str,
+        earlier: &Path,
+        rows: u64,
+    ) -> Result<Self, OutputError> {
+        let lines = prefix_rows_of(earlier, header, rows)
+            .map_err(|why| OutputError::new("--csv", path, format!("cannot resume it: {why}")))?;
+        let mut w = Self::create(path, header)?;
+        w.last_t = copy_rows(&mut w.out, &lines)?;
+        w.rows = rows;
+        Ok(w)
+    }
+
+    /// Writes the buffered rows to the (temporary) file: before a checkpoint, so that a run
+    /// killed after it leaves a CSV that holds the rows up to it.
+    pub fn flush(&mut self) -> Result<(), OutputError> {
+        self.out
+            .flush()
+            .map_err(|e| self.out.fail(format!("write failed: {e}")))
     }
 
     /// Appends one step of a prescribed case.
@@ -97,6 +123,14 @@ impl Csv3Writer {
         let (path, _) = self.out.commit()?;
         Ok((path, self.rows))
     }
+}
+
+/// Whether the CSV at `path` (of `header`) holds the first `rows` steps of a run.
+///
+/// # Errors
+/// [`CsvPrefixError`] saying why it does not.
+pub fn check_prefix3(path: &Path, header: &str, rows: u64) -> Result<(), CsvPrefixError> {
+    prefix_rows_of(path, header, rows).map(|_| ())
 }
 
 /// The six coefficients as CSV fields: C_L, C_D, C_S, C_roll, C_yaw, C_pitch.

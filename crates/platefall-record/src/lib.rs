@@ -151,6 +151,7 @@
 
 pub mod cadence;
 pub mod checkpoint;
+pub mod checkpoint3;
 mod csv;
 pub mod csv3;
 pub mod files;

@@ -125,7 +125,11 @@ pub(crate) fn branch_of(spec: &EnsembleSpec) -> Result<(Checkpoint, Branch), Fai
     let ckpt = read_checkpoint(&spec.from, &crate::version::program_version())
         .map_err(|e| bad(format!("--from: {e}")))?;
     let shown = spec.from.display();
-    let sim = &ckpt.sim;
+    let Some(sim) = ckpt.sim.planar() else {
+        return Err(bad(format!(
+            "--from {shown}: a 3-D run's checkpoint (--span): accepted a 2-D run's"
+        )));
+    };
     let (Some(_), Some(th)) = (&sim.body, sim.theta_release) else {
         return Err(bad(format!(
             "--from {shown}: the plate is not free to turn (a static or forced run, or not yet \

@@ -76,6 +76,17 @@ pub enum Flow3Error {
         /// The tolerance asked.
         tolerance: f64,
     },
+    /// A saved flow state does not fit this solver (checkpoints, docs/three-d.md "On the command
+    /// line").
+    #[error("the saved 3-D flow state does not fit this solver: {what} is {saved}, this solver's is {ours}")]
+    StateMismatch {
+        /// What differs.
+        what: &'static str,
+        /// The saved state's.
+        saved: String,
+        /// This solver's.
+        ours: String,
+    },
 }
 
 /// Velocities beyond this multiple of (1 + |g|max) mean the solution has blown up.

@@ -4,7 +4,7 @@
 use nalgebra::{Rotation3, Vector3};
 
 /// The body's motion at one time level.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Frame3 {
     /// Rotation from body to inertial axes.
     pub rotation: Rotation3<f64>,

@@ -21,7 +21,8 @@
 //! the near-wall viscous stencils), `project.rs` (pressure operator, Jacobi CG, correction),
 //! `multigrid.rs` (the default pressure solver, `poisson3` behind the same boundary),
 //! `loads.rs` (forces and moments), `added_mass.rs` (the 6 × 6 added-mass matrix K), `coefficients.rs` (lift, drag, side force and the three
-//! moments), `error.rs` and `params.rs`, `solver.rs` ([`FlowSolver3`]).
+//! moments), `error.rs` and `params.rs`, `solver.rs` ([`FlowSolver3`]), `saved.rs` (its state between two
+//! steps, for checkpoints).
 //!
 //! The step allocates nothing after [`FlowSolver3::new`]; the right-hand side and the pressure
 //! solver's sweeps run in parallel over z-planes (rayon), with every reduction in a fixed order,
@@ -40,6 +41,7 @@ mod multigrid;
 mod params;
 mod plate;
 mod project;
+mod saved;
 mod snapshot;
 mod solver;
 
@@ -55,5 +57,6 @@ pub use metrics::Metrics3;
 pub use multigrid::MultigridCg;
 pub use params::FlowParams3;
 pub use project::{JacobiCg, PoissonOperator, PoissonSolve, SolveStats};
+pub use saved::FlowState3;
 pub use snapshot::FieldSnapshot3;
 pub use solver::{FlowSolver3, ForceFn3};

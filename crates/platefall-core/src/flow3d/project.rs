@@ -164,7 +164,7 @@ pub struct Stop<'a> {
 }
 
 /// What a solve did.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct SolveStats {
     /// Iterations taken.
     pub iterations: usize,

@@ -37,15 +37,15 @@ pub type ForceFn3 = Box<dyn Fn([f64; 3], f64) -> [f64; 3] + Send + Sync>;
 
 /// The three-dimensional flow solver.
 pub struct FlowSolver3 {
-    grid: Grid3,
+    pub(super) grid: Grid3,
     params: FlowParams3,
     metrics: Metrics3,
     layout: Layout,
-    vel: [Vec<f64>; 3],
+    pub(super) vel: [Vec<f64>; 3],
     h: [Vec<f64>; 3],
-    h_old: [Vec<f64>; 3],
+    pub(super) h_old: [Vec<f64>; 3],
     /// Cell pressures (zero in the plate), index i + nx (j + ny k).
-    p: Vec<f64>,
+    pub(super) p: Vec<f64>,
     /// The pressure equation's right-hand side and the divergence weights Δt / V.
     rhs: Vec<f64>,
     weight: Vec<f64>,
@@ -53,14 +53,14 @@ pub struct FlowSolver3 {
     plate: Plate,
     outer: OuterBc3,
     forcing: Option<ForceFn3>,
-    frame: Frame3,
-    t: f64,
-    dt_prev: f64,
-    steps: u64,
-    rhs_stats: RhsStats,
-    solve_stats: SolveStats,
+    pub(super) frame: Frame3,
+    pub(super) t: f64,
+    pub(super) dt_prev: f64,
+    pub(super) steps: u64,
+    pub(super) rhs_stats: RhsStats,
+    pub(super) solve_stats: SolveStats,
     dt_visc: f64,
-    loads: Loads3,
+    pub(super) loads: Loads3,
 }
 
 impl FlowSolver3 {

@@ -31,6 +31,7 @@ mod sample;
 mod saved;
 mod spec;
 mod timestep;
+mod turns;
 
 pub use error::SimError;
 pub use history::{History, Quantity, DEFAULT_CAPACITY};
@@ -40,6 +41,7 @@ pub use sample::StepSample;
 pub use saved::{RestoreError, SimState};
 pub use spec::{BodyConfig, PlateSource, ReferenceScales, RunConfig, TimeControl, ValidatedConfig};
 pub use timestep::{choose_dt, MAX_GROWTH};
+pub use turns::turns_done;
 
 use crate::body::{BodyState, Coupling, Dof, InertialLoads, RigidBody, StrongCoupling};
 use crate::flow::{AddedMass, FlowSolver, OuterBc};
@@ -278,10 +280,7 @@ impl Simulation {
         if self.flow.t() >= self.config.time.t_end - 1e-9 {
             return true;
         }
-        match (self.config.time.turns, self.theta_release) {
-            (Some(n), Some(th)) => (self.state.theta - th).abs() >= 2.0 * std::f64::consts::PI * n,
-            _ => false,
-        }
+        turns_done(self.config.time.turns, self.state.theta, self.theta_release)
     }
 
     /// Runs to the end, reporting every step to `obs`.

@@ -61,15 +61,15 @@ pub struct Sample6 {
 
 /// The coupled flow and body.
 pub struct Flight3 {
-    flow: FlowSolver3,
-    body: RigidBody6,
+    pub(super) flow: FlowSolver3,
+    pub(super) body: RigidBody6,
     coupling: StrongCoupling6,
     added: AddedMass3,
     /// The flow's frame one level back, and the step that left it.
-    before: Frame3,
-    dt_prev: f64,
+    pub(super) before: Frame3,
+    pub(super) dt_prev: f64,
     /// While held: the release time and the constraint the body takes then.
-    release: Option<(f64, Constraint6)>,
+    pub(super) release: Option<(f64, Constraint6)>,
 }
 
 impl Flight3 {

@@ -26,9 +26,9 @@ pub struct Sample3 {
     pub divergence: f64,
 }
 
-/// Steps `flow` (built at the case's state at t = 0) to `t_end` with Δt = min(stable Δt,
-/// `dt_max`), the plate moving as `case` prescribes; `observe` sees every step and the flow
-/// after it, and may stop the run.
+/// Steps `flow` (built at the case's state at t = 0, or restored between two steps of such a
+/// run) to `t_end` with Δt = min(stable Δt, `dt_max`), the plate moving as `case` prescribes;
+/// `observe` sees every step and the flow after it, and may stop the run.
 ///
 /// # Errors
 /// [`Flow3Error::BadParameter`] for a `case` that is not prescribed (pinned, free) or a
@@ -53,7 +53,10 @@ pub fn run_prescribed(
             value: dt_max,
         });
     }
-    flow.begin_step()?;
+    if flow.steps() == 0 {
+        // The first step's stable Δt; a restored flow keeps the one its last step left.
+        flow.begin_step()?;
+    }
     while flow.t() < t_end {
         let dt = flow.stable_dt().min(dt_max).min(t_end - flow.t());
         let state = case.prescribed_state(flow.t() + dt);

@@ -1,0 +1,113 @@
+//! The recording of a 3-D run (docs/three-d.md "Recording"): opened from the run's recording
+//! options, fed every step and a snapshot of the flow at the `--field-every` cadence, committed
+//! with the run's outcome.
+use platefall_core::flow3d::{FlowSolver3, Span};
+use platefall_core::sim3::Run3;
+use platefall_record::messages::RunOutcome;
+use platefall_record::messages3::{RunInfo3, Step3};
+use platefall_record::recorder3::Recorder3;
+
+use super::command::Command;
+use super::record_args::RecordArgs;
+
+/// Snapshot cadence of a 3-D recording without `--field-every` (c/U).
+const FIELD_EVERY_3D: f64 = 0.5;
+/// The Q level of the recording's vortex iso-surface ((U/c)²).
+const Q_LEVEL: f64 = 2.0;
+/// The vorticity at which the recording's slices saturate (U/c).
+const VORTICITY_SCALE: f64 = 5.0;
+
+/// The recording of a 3-D run: its logger and the snapshot cadence.
+pub(super) struct Recording {
+    recorder: Recorder3,
+    every: f64,
+    next: f64,
+}
+
+impl Recording {
+    /// Opens the recording the options ask for (`recordings/<case>-3d.rrd` by default), or
+    /// none without one.
+    pub(super) fn start(
+        cmd: &Command,
+        run: &Run3,
+        record: &RecordArgs,
+        cells: usize,
+    ) -> anyhow::Result<Option<Recording>> {
+        if !record.uses_rerun() {
+            return Ok(None);
+        }
+        let case = run.config.case.kind();
+        let mut args = record.clone();
+        if args.save.is_none() {
+            args.save =
+                Some(RecordArgs::default_save_path(case).with_file_name(format!("{case}-3d.rrd")));
+        }
+        args.field_every = Some(record.field_every.unwrap_or(FIELD_EVERY_3D));
+        let opts = args.resolve(case, &[])?;
+        let span = run.grid.span;
+        let half_span = 0.5 * span.length();
+        let title = match span {
+            Span::Finite(b) => format!("{}, span {b} chords", run.config.title()),
+            Span::Periodic(p) => format!("{}, periodic span {p} chords", run.config.title()),
+        };
+        let invocation = super::provenance::invocation(cmd);
+        let config_markdown = format!(
+            "# {title}\n\n```text\n{}\n```\n\n{cells} cells; {}\n",
+            invocation.args.join(" "),
+            invocation.version
+        );
+        let info = RunInfo3 {
+            title,
+            config_markdown,
+            half_size: [0.5, 0.5 * run.grid.thickness, half_span],
+            periodic: matches!(span, Span::Periodic(_)),
+            t_end: Some(run.config.time.t_end),
+            q_level: Q_LEVEL,
+            vorticity_scale: VORTICITY_SCALE,
+        };
+        let every = opts.field_every;
+        Ok(Some(Recording {
+            recorder: Recorder3::start(&opts, &info)?,
+            every,
+            next: 0.0,
+        }))
+    }
+
+    /// Sends a step and, when due and the logger keeps up, the flow's snapshot.
+    pub(super) fn step(&mut self, s: Step3, flow: &FlowSolver3) {
+        self.recorder.step(s);
+        if s.t + 1e-9 >= self.next {
+            self.next = s.t + self.every;
+            if self.recorder.wants_field() {
+                self.recorder.field(flow.snapshot());
+            }
+        }
+    }
+
+    /// Commits the recording and says what it holds; false if it failed.
+    pub(super) fn finish(self, outcome: RunOutcome) -> bool {
+        let report = self.recorder.finish(outcome);
+        if let Some((path, bytes)) = &report.viewer.rrd {
+            let skipped = if report.skipped > 0 {
+                format!(", {} snapshots skipped", report.skipped)
+            } else {
+                String::new()
+            };
+            eprintln!(
+                "recording: {} ({:.1} MB{skipped})",
+                path.display(),
+                *bytes as f64 / 1e6
+            );
+        }
+        for n in &report.viewer.notes {
+            eprintln!("platefall: warning: {n}");
+        }
+        if let Some(server) = report.viewer.server {
+            server.shut_down();
+        }
+        for e in &report.errors {
+            eprintln!("error: {e}");
+        }
+        report.errors.is_empty()
+    }
+}
