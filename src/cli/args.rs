@@ -46,7 +46,9 @@ pub struct SolverArgs {
     pub growth: Option<f64>,
     /// Run the flow in three dimensions around a plate of this span (static, forced, free): B
     /// (a finite span of B chords, free tips) or periodic:P (an infinite span, periodic over P
-    /// chords). The CSV, summary and report hold the six coefficients; no recording is written.
+    /// chords). The CSV, summary and report hold the six coefficients; the recording shows the
+    /// plate, its path, the vortex iso-surface and two vorticity slices [default:
+    /// recordings/<case>-3d.rrd].
     #[arg(long, value_parser = parse_span)]
     pub span: Option<Span>,
     /// Courant number of the convective time-step limit (AB2 with the limited κ = 1/3 scheme was

@@ -38,6 +38,7 @@ mod shape_args;
 mod shell;
 mod signals;
 mod span_arg;
+mod span_cost;
 mod span_outputs;
 mod span_recording;
 mod span_resume;

@@ -14,6 +14,7 @@ use super::limits::memory_limit;
 use super::record_args::RecordArgs;
 use super::shape_args::ShapeKind;
 use super::signals::{Interrupts, Phase};
+use super::span_cost::{cost_line, PhaseClock};
 use super::span_outputs::{Outputs, Stop};
 use super::span_recording::Recording;
 use super::span_steps::{Control, Mover};
@@ -183,7 +184,15 @@ pub(super) fn go(mut s: SpanStart, interrupts: &Interrupts) -> anyhow::Result<Ex
     let (run, out) = (&s.run, &mut s.out);
     let result = pool.install(|| {
         let mut mover = Mover::new(run, s.free, s.restored.as_ref())?;
+        let phases = PhaseClock::new();
+        mover.set_phase_marker(phases.marker());
+        let (steps_before, started) = (mover.steps(), Instant::now());
         let stopped = mover.run(run, out, &mut ctl)?;
+        let wall = started.elapsed().as_secs_f64();
+        let steps = mover.steps() - steps_before;
+        if let Some(line) = cost_line(phases.seconds(), wall, steps, cells) {
+            eprintln!("{line}");
+        }
         let periodic = ctl.checkpoints.as_ref().is_some_and(|c| c.periodic());
         let wanted = stopped || periodic;
         if wanted && ctl.checkpoints.is_some() {

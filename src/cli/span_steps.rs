@@ -8,7 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use super::checkpointer::Checkpointer;
 use super::span_outputs::{Outputs, Stop};
 use platefall_core::body::six::PhysicalPlate6;
-use platefall_core::flow3d::FlowSolver3;
+use platefall_core::flow3d::{FlowSolver3, PhaseMarker};
 use platefall_core::sim::turns_done;
 use platefall_core::sim3::{unwrapped_pitch, Flight3, Run3, Sample3, Sample6};
 use platefall_post::summary3::Attitude;
@@ -49,6 +49,22 @@ impl Mover {
             _ => return Err(Stop::Checkpoint("the checkpoint is of another case".into())),
         }
         Ok(mover)
+    }
+
+    /// Steps taken so far.
+    pub(super) fn steps(&self) -> u64 {
+        match self {
+            Mover::Flow(f) => f.steps(),
+            Mover::Flight(f, ..) => f.flow().steps(),
+        }
+    }
+
+    /// Installs the flow's phase marker.
+    pub(super) fn set_phase_marker(&mut self, marker: PhaseMarker) {
+        match self {
+            Mover::Flow(f) => f.set_phase_marker(marker),
+            Mover::Flight(f, ..) => f.set_phase_marker(marker),
+        }
     }
 
     /// The state between two steps.

@@ -13,6 +13,7 @@ use super::metrics::Metrics3;
 use super::momentum::{explicit_rhs, RhsContext, RhsStats};
 use super::multigrid::MultigridCg;
 use super::params::FlowParams3;
+use super::phases::{Phase3, PhaseMarker};
 use super::plate::Plate;
 use super::project::{
     cell_fluxes, correct, pressure_rhs, PoissonOperator, PoissonSolve, SolveStats, Stop,
@@ -61,6 +62,7 @@ pub struct FlowSolver3 {
     pub(super) solve_stats: SolveStats,
     dt_visc: f64,
     pub(super) loads: Loads3,
+    marker: Option<PhaseMarker>,
 }
 
 impl FlowSolver3 {
@@ -99,6 +101,7 @@ impl FlowSolver3 {
             solve_stats: SolveStats::default(),
             dt_visc,
             loads: Loads3::default(),
+            marker: None,
             grid,
             params,
             metrics,
@@ -147,12 +150,31 @@ impl FlowSolver3 {
         if !(dt > 0.0 && dt.is_finite()) {
             return Err(Flow3Error::BadStep { dt });
         }
+        self.mark(Phase3::Begin);
         self.begin_step()?;
+        self.mark(Phase3::RightHandSide);
         self.predict(dt);
+        self.mark(Phase3::Predictor);
         self.impose_boundaries(dt, next);
+        self.mark(Phase3::Boundaries);
         self.project(dt)?;
+        self.mark(Phase3::Pressure);
         self.end_step(dt);
-        self.update_loads()
+        self.update_loads()?;
+        self.mark(Phase3::Loads);
+        Ok(())
+    }
+
+    /// Installs `marker`, called at every phase boundary of [`FlowSolver3::advance`] (to time
+    /// the phases: the solver reads no clock).
+    pub fn set_phase_marker(&mut self, marker: PhaseMarker) {
+        self.marker = Some(marker);
+    }
+
+    fn mark(&mut self, phase: Phase3) {
+        if let Some(m) = &mut self.marker {
+            m(phase);
+        }
     }
 
     /// Ghost values and the explicit right-hand side Hⁿ of the state at tⁿ.

@@ -10,7 +10,7 @@
 use nalgebra::{Rotation3, Vector3};
 
 use crate::body::six::{Constraint6, Loads6, RigidBody6, SixError, State6, StrongCoupling6};
-use crate::flow3d::{AddedMass3, Coefficients3, Flow3Error, FlowSolver3, Frame3};
+use crate::flow3d::{AddedMass3, Coefficients3, Flow3Error, FlowSolver3, Frame3, PhaseMarker};
 
 /// Why a flight could not start or stopped.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -171,6 +171,11 @@ impl Flight3 {
             iterations: stats.iterations,
             divergence: stats.divergence,
         })
+    }
+
+    /// Installs the flow's phase marker (`FlowSolver3::set_phase_marker`).
+    pub fn set_phase_marker(&mut self, marker: PhaseMarker) {
+        self.flow.set_phase_marker(marker);
     }
 
     /// The body's step t → t + dt under the flow's loads at t, strongly coupled.
