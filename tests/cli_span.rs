@@ -92,14 +92,9 @@ fn a_finite_span_has_no_side_force_roll_or_yaw() {
 
 #[test]
 fn options_a_three_dimensional_run_cannot_honour_are_refused_in_one_line() {
-    let dir = scratch("refused");
-    let cases: [(&[&str], &str); 4] = [
+    let cases: [(&[&str], &str); 3] = [
         (&["static", "--span", "2", "--shape", "ellipse"], "--shape"),
         (&["pinned", "--span", "2"], "pinned --span"),
-        (
-            &["static", "--span", "2", "--vtk", dir.to_str().unwrap()],
-            "--vtk",
-        ),
         (&["free", "--span", "2", "--mass", "1"], "--mass"),
     ];
     for (args, flag) in cases {
@@ -212,4 +207,38 @@ fn a_flight_stops_after_its_turns() {
         "{}",
         turned(last)
     );
+}
+
+#[test]
+fn a_static_run_writes_its_vtk_series() {
+    let dir = scratch("vtk");
+    let vtk = dir.join("vtk");
+    let (code, _, err) = platefall(&[
+        "static",
+        "--span",
+        "1",
+        "--resolution",
+        "6",
+        "--extent",
+        "2",
+        "--t-end",
+        "0.3",
+        "--no-save",
+        "--progress",
+        "off",
+        "--vtk",
+        vtk.to_str().unwrap(),
+        "--vtk-every",
+        "0.1",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("VTK: "), "{err}");
+    let pvd = std::fs::read_to_string(vtk.join("run.pvd")).unwrap();
+    let listed = pvd.matches("<DataSet").count();
+    // Snapshots at the first step and every 0.1 after it, up to t = 0.3.
+    assert!((3..=4).contains(&listed), "{pvd}");
+    for k in 0..listed {
+        let vts = std::fs::read(vtk.join(format!("flow-{k:06}.vts"))).unwrap();
+        assert!(vts.starts_with(b"<?xml") && vts.len() > 1000);
+    }
 }

@@ -3,9 +3,10 @@
 //! with the run's outcome.
 use platefall_core::flow3d::{FlowSolver3, Span};
 use platefall_core::sim3::Run3;
-use platefall_record::messages::RunOutcome;
+use platefall_record::messages::{FieldUse, RunOutcome};
 use platefall_record::messages3::{RunInfo3, Step3};
 use platefall_record::recorder3::Recorder3;
+use platefall_record::viewer::ViewerReport;
 
 use super::command::Command;
 use super::record_args::RecordArgs;
@@ -17,23 +18,25 @@ const Q_LEVEL: f64 = 2.0;
 /// The vorticity at which the recording's slices saturate (U/c).
 const VORTICITY_SCALE: f64 = 5.0;
 
-/// The recording of a 3-D run: its logger and the snapshot cadence.
+/// The recording of a 3-D run: its logger and the snapshot cadences (the recording's, the VTK
+/// series'), each with the time its next snapshot is due (infinite without it).
 pub(super) struct Recording {
     recorder: Recorder3,
-    every: f64,
-    next: f64,
+    every: [f64; 2],
+    next: [f64; 2],
 }
 
 impl Recording {
-    /// Opens the recording the options ask for (`recordings/<case>-3d.rrd` by default), or
-    /// none without one.
+    /// Opens the recording and the VTK series the options ask for (`recordings/<case>-3d.rrd`
+    /// by default), or none without either.
     pub(super) fn start(
         cmd: &Command,
         run: &Run3,
         record: &RecordArgs,
         cells: usize,
     ) -> anyhow::Result<Option<Recording>> {
-        if !record.uses_rerun() {
+        let rerun = record.uses_rerun();
+        if !rerun && record.vtk.is_none() {
             return Ok(None);
         }
         let case = run.config.case.kind();
@@ -65,49 +68,75 @@ impl Recording {
             q_level: Q_LEVEL,
             vorticity_scale: VORTICITY_SCALE,
         };
-        let every = opts.field_every;
+        let inf = f64::INFINITY;
+        let every = [
+            if rerun { opts.field_every } else { inf },
+            opts.vtk.as_ref().map_or(inf, |v| v.every),
+        ];
         Ok(Some(Recording {
-            recorder: Recorder3::start(&opts, &info)?,
+            recorder: Recorder3::start(&opts, &info, rerun)?,
+            next: every.map(|e| if e.is_finite() { 0.0 } else { inf }),
             every,
-            next: 0.0,
         }))
     }
 
-    /// Sends a step and, when due and the logger keeps up, the flow's snapshot.
+    /// Sends a step and, when one is due, the flow's snapshot (for the recording only if the
+    /// logger keeps up).
     pub(super) fn step(&mut self, s: Step3, flow: &FlowSolver3) {
         self.recorder.step(s);
-        if s.t + 1e-9 >= self.next {
-            self.next = s.t + self.every;
-            if self.recorder.wants_field() {
-                self.recorder.field(flow.snapshot());
+        let due = self.next.map(|t| s.t + 1e-9 >= t);
+        for k in 0..2 {
+            if due[k] {
+                self.next[k] = s.t + self.every[k];
             }
+        }
+        let admitted = self.recorder.admit(FieldUse {
+            viewer: due[0],
+            vtk: due[1],
+        });
+        if admitted.viewer || admitted.vtk {
+            self.recorder.field(flow.snapshot(), admitted);
         }
     }
 
     /// Commits the recording and says what it holds; false if it failed.
     pub(super) fn finish(self, outcome: RunOutcome) -> bool {
         let report = self.recorder.finish(outcome);
-        if let Some((path, bytes)) = &report.viewer.rrd {
-            let skipped = if report.skipped > 0 {
-                format!(", {} snapshots skipped", report.skipped)
-            } else {
-                String::new()
-            };
+        if let Some(v) = &report.vtk {
             eprintln!(
-                "recording: {} ({:.1} MB{skipped})",
-                path.display(),
-                *bytes as f64 / 1e6
+                "VTK: {} ({} snapshots, {:.1} MB)",
+                v.pvd.display(),
+                v.snapshots,
+                v.bytes as f64 / 1e6
             );
         }
-        for n in &report.viewer.notes {
-            eprintln!("platefall: warning: {n}");
-        }
-        if let Some(server) = report.viewer.server {
-            server.shut_down();
+        if let Some(viewer) = report.viewer {
+            viewer_lines(viewer, report.skipped);
         }
         for e in &report.errors {
             eprintln!("error: {e}");
         }
         report.errors.is_empty()
+    }
+}
+
+/// What the viewer side of a recording says at the end; a --serve server is shut down.
+fn viewer_lines(viewer: ViewerReport, skipped: u64) {
+    if let Some((path, bytes)) = &viewer.rrd {
+        let skipped = match skipped {
+            0 => String::new(),
+            k => format!(", {k} snapshots skipped"),
+        };
+        eprintln!(
+            "recording: {} ({:.1} MB{skipped})",
+            path.display(),
+            *bytes as f64 / 1e6
+        );
+    }
+    for n in &viewer.notes {
+        eprintln!("platefall: warning: {n}");
+    }
+    if let Some(server) = viewer.server {
+        server.shut_down();
     }
 }

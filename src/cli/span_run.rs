@@ -31,7 +31,7 @@ use platefall_record::output::write_atomically;
 use platefall_record::provenance::Invocation;
 
 /// The first option given that a 3-D run cannot honour yet.
-fn unavailable(cmd: &Command, record: &RecordArgs) -> Option<&'static str> {
+fn unavailable(cmd: &Command) -> Option<&'static str> {
     let solver = cmd.case_args()?.0;
     let given = [
         (matches!(cmd, Command::Pinned(_)), "pinned --span"),
@@ -40,8 +40,6 @@ fn unavailable(cmd: &Command, record: &RecordArgs) -> Option<&'static str> {
             "--shape other than rect",
         ),
         (solver.seed_grid, "--seed-grid"),
-        (record.vtk.is_some(), "--vtk"),
-        (record.vtk_every.is_some(), "--vtk-every"),
     ];
     given.iter().find(|g| g.0).map(|g| g.1)
 }
@@ -67,7 +65,7 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
     let Some((solver, record)) = cmd.case_args() else {
         anyhow::bail!("not a case subcommand");
     };
-    if let Some(flag) = unavailable(cmd, record) {
+    if let Some(flag) = unavailable(cmd) {
         anyhow::bail!("{flag} is not available for 3-D runs yet (with --span)");
     }
     if let Some(flag) = non_card_plate(cmd) {

@@ -7,7 +7,7 @@ use platefall_core::flow3d::{Coefficients3, FieldSnapshot3};
 use platefall_core::sim::StepSample;
 use platefall_core::sim3::{Sample3, Sample6};
 
-use crate::messages::RunOutcome;
+use crate::messages::{FieldUse, RunOutcome};
 
 /// Everything about a 3-D run that does not change while it runs.
 #[derive(Clone, Debug)]
@@ -58,8 +58,8 @@ pub struct Step3 {
 pub enum Message3 {
     /// Every step, never dropped.
     Step(Step3),
-    /// A snapshot of the flow (dropped when the logger is behind).
-    Field(Arc<FieldSnapshot3>),
+    /// A snapshot of the flow and what it is for.
+    Field(Arc<FieldSnapshot3>, FieldUse),
     /// The run is over.
     Finish(RunOutcome),
 }

@@ -19,10 +19,17 @@ pub struct FieldSnapshot3 {
     pub frame: Frame3,
     /// Cells along x, y, z.
     pub n: [usize; 3],
+    /// Node coordinates along each axis, body axes (chords; n + 1 each).
+    pub nodes: [Vec<f64>; 3],
     /// Cell-centre coordinates along each axis, body axes (chords).
     pub centres: [Vec<f64>; 3],
     /// The plate's box in body axes: its lowest and highest corners.
     pub plate: Option<[[f64; 3]; 2]>,
+    /// The velocity at the cell centres (U), inertial velocity along the body axes (inside the
+    /// plate: the plate's own).
+    pub velocity: [Vec<f64>; 3],
+    /// The cell pressures (ρU²; zero in the plate).
+    pub pressure: Vec<f64>,
     /// Vorticity components (U/c) in body axes; NaN inside the plate.
     pub vorticity: [Vec<f32>; 3],
     /// The Q criterion ((U/c)²); NaN inside the plate.
@@ -75,7 +82,10 @@ impl FlowSolver3 {
             frame: *self.frame(),
             n,
             plate: grid.plate.then(|| plate_box(grid)),
+            nodes: grid.nodes.clone(),
             centres,
+            velocity: u,
+            pressure: self.p().to_vec(),
             vorticity,
             q,
         }

@@ -108,26 +108,25 @@ pub fn outline_polygon(info: &SnapshotInfo, points: &[f64]) -> Vec<u8> {
     file_bytes(&xml, &a)
 }
 
-/// One time of the collection: the snapshot's time and its two files (relative names).
+/// One time of the collection: the snapshot's time and its files (relative names), part 0
+/// first (the flow), then part 1 (the plate's outline) if there is one.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Entry {
     /// Convective time.
     pub t: f64,
-    /// The flow's `.vts`.
-    pub flow: String,
-    /// The outline's `.vtp`.
-    pub plate: String,
+    /// The files of the parts.
+    pub parts: Vec<String>,
 }
 
-/// The `.pvd` collection of `entries`: at each time the flow as part 0, the plate as part 1.
-/// Times are written in full precision (Rust's shortest round-trip form).
+/// The `.pvd` collection of `entries`: at each time its files as parts 0, 1, …. Times are
+/// written in full precision (Rust's shortest round-trip form).
 pub fn collection(entries: &[Entry]) -> Vec<u8> {
     let mut xml = String::from(
         "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" \
          byte_order=\"LittleEndian\">\n  <Collection>\n",
     );
     for e in entries {
-        for (part, file) in [(0, &e.flow), (1, &e.plate)] {
+        for (part, file) in e.parts.iter().enumerate() {
             let _ = writeln!(
                 xml,
                 "    <DataSet timestep=\"{}\" group=\"\" part=\"{part}\" file=\"{}\"/>",
@@ -141,7 +140,7 @@ pub fn collection(entries: &[Entry]) -> Vec<u8> {
 }
 
 /// Each tag on a line of its own, indented by `by` spaces.
-fn indent(tags: &[String], by: usize) -> String {
+pub(super) fn indent(tags: &[String], by: usize) -> String {
     tags.iter()
         .map(|t| format!("{:by$}{t}\n", ""))
         .collect::<String>()

@@ -21,6 +21,7 @@
 pub mod documents;
 pub mod encode;
 pub mod sample;
+pub mod three;
 
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -58,66 +59,48 @@ pub struct VtkReport {
     pub bytes: u64,
 }
 
-/// A VTK series being written: what every snapshot shares, and the files so far.
+/// The files of a series: the directory, the snapshots written and their bytes.
 #[derive(Debug)]
-pub struct VtkSeries {
+pub(crate) struct SeriesFiles {
     dir: PathBuf,
-    grid: Arc<GridGeometry>,
-    section: Arc<Outline>,
-    on_plate: Vec<u8>,
-    solid: Vec<u8>,
     entries: Vec<Entry>,
     bytes: u64,
 }
 
-impl VtkSeries {
+impl SeriesFiles {
     /// Creates the directory if needed and writes an empty collection.
-    pub fn create(opts: &VtkOptions, info: &RunInfo) -> Result<VtkSeries, OutputError> {
-        if !opts.dir.is_dir() {
-            std::fs::create_dir(&opts.dir).map_err(|e| {
-                OutputError::new(FLAG, &opts.dir, format!("cannot create the directory: {e}"))
+    pub(crate) fn create(dir: &Path) -> Result<SeriesFiles, OutputError> {
+        if !dir.is_dir() {
+            std::fs::create_dir(dir).map_err(|e| {
+                OutputError::new(FLAG, dir, format!("cannot create the directory: {e}"))
             })?;
         }
-        let series = VtkSeries {
-            dir: opts.dir.clone(),
-            on_plate: nodes_on_plate(&info.grid, &info.section),
-            solid: info.grid.solid.iter().map(|&s| u8::from(s)).collect(),
-            grid: info.grid.clone(),
-            section: info.section.clone(),
+        let files = SeriesFiles {
+            dir: dir.to_path_buf(),
             entries: Vec::new(),
             bytes: 0,
         };
-        series.write_collection()?;
-        Ok(series)
+        files.write_collection()?;
+        Ok(files)
     }
 
-    /// Writes one snapshot's `.vts` and `.vtp`, then the collection with it.
-    pub fn write(&mut self, snap: &FieldSnapshot) -> Result<(), OutputError> {
-        let k = self.entries.len();
-        let entry = Entry {
-            t: snap.t,
-            flow: format!("flow-{k:06}.vts"),
-            plate: format!("plate-{k:06}.vtp"),
-        };
-        let info = SnapshotInfo {
-            t: snap.t,
-            step: snap.step,
-            pose: Pose::of(snap),
-            frame: snap.frame,
-        };
-        let sample = FlowSample::new(&self.grid, &self.on_plate, snap);
-        let dims = (self.grid.nx(), self.grid.ny());
-        let flow = documents::structured_grid(&info, dims, &sample, &self.on_plate, &self.solid);
-        self.bytes += self.put(&entry.flow, &flow)?;
-        let outline = placed_outline(&self.section, &info.pose);
-        let plate = documents::outline_polygon(&info, &outline);
-        self.bytes += self.put(&entry.plate, &plate)?;
-        self.entries.push(entry);
+    /// The number of snapshots written.
+    pub(crate) fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Writes the parts of the snapshot at `t` (name, bytes), then the collection with it.
+    pub(crate) fn add(&mut self, t: f64, parts: &[(String, Vec<u8>)]) -> Result<(), OutputError> {
+        for (name, bytes) in parts {
+            self.bytes += self.put(name, bytes)?;
+        }
+        let parts = parts.iter().map(|p| p.0.clone()).collect();
+        self.entries.push(Entry { t, parts });
         self.write_collection()
     }
 
     /// The series at the end of the run.
-    pub fn report(&self) -> VtkReport {
+    pub(crate) fn report(&self) -> VtkReport {
         VtkReport {
             pvd: self.dir.join(COLLECTION),
             snapshots: self.entries.len() as u64,
@@ -134,9 +117,58 @@ impl VtkSeries {
     fn put(&self, name: &str, bytes: &[u8]) -> Result<u64, OutputError> {
         write_atomically(FLAG, &self.dir.join(name), bytes)
     }
+}
+
+/// A VTK series being written: what every snapshot shares, and the files so far.
+#[derive(Debug)]
+pub struct VtkSeries {
+    files: SeriesFiles,
+    grid: Arc<GridGeometry>,
+    section: Arc<Outline>,
+    on_plate: Vec<u8>,
+    solid: Vec<u8>,
+}
+
+impl VtkSeries {
+    /// Creates the directory if needed and writes an empty collection.
+    pub fn create(opts: &VtkOptions, info: &RunInfo) -> Result<VtkSeries, OutputError> {
+        Ok(VtkSeries {
+            files: SeriesFiles::create(&opts.dir)?,
+            on_plate: nodes_on_plate(&info.grid, &info.section),
+            solid: info.grid.solid.iter().map(|&s| u8::from(s)).collect(),
+            grid: info.grid.clone(),
+            section: info.section.clone(),
+        })
+    }
+
+    /// Writes one snapshot's `.vts` and `.vtp`, then the collection with it.
+    pub fn write(&mut self, snap: &FieldSnapshot) -> Result<(), OutputError> {
+        let k = self.files.len();
+        let info = SnapshotInfo {
+            t: snap.t,
+            step: snap.step,
+            pose: Pose::of(snap),
+            frame: snap.frame,
+        };
+        let sample = FlowSample::new(&self.grid, &self.on_plate, snap);
+        let dims = (self.grid.nx(), self.grid.ny());
+        let flow = documents::structured_grid(&info, dims, &sample, &self.on_plate, &self.solid);
+        let outline = placed_outline(&self.section, &info.pose);
+        let plate = documents::outline_polygon(&info, &outline);
+        let parts = [
+            (format!("flow-{k:06}.vts"), flow),
+            (format!("plate-{k:06}.vtp"), plate),
+        ];
+        self.files.add(snap.t, &parts)
+    }
+
+    /// The series at the end of the run.
+    pub fn report(&self) -> VtkReport {
+        self.files.report()
+    }
 
     /// The directory.
     pub fn dir(&self) -> &Path {
-        &self.dir
+        &self.files.dir
     }
 }

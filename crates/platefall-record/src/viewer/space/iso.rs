@@ -119,6 +119,9 @@ mod tests {
             n: [m; 3],
             centres: [axis.clone(), axis.clone(), axis],
             plate: None,
+            nodes: Default::default(),
+            velocity: Default::default(),
+            pressure: Vec::new(),
             vorticity: Default::default(),
             q,
         }

@@ -142,6 +142,9 @@ mod tests {
             n,
             centres,
             plate: None,
+            nodes: Default::default(),
+            velocity: Default::default(),
+            pressure: Vec::new(),
             vorticity: w,
             q: vec![0.0; 24],
         }
