@@ -85,9 +85,9 @@ impl Recording {
     pub(super) fn step(&mut self, s: Step3, flow: &FlowSolver3) {
         self.recorder.step(s);
         let due = self.next.map(|t| s.t + 1e-9 >= t);
-        for k in 0..2 {
-            if due[k] {
-                self.next[k] = s.t + self.every[k];
+        for ((next, every), due) in self.next.iter_mut().zip(self.every).zip(due) {
+            if due {
+                *next = s.t + every;
             }
         }
         let admitted = self.recorder.admit(FieldUse {
