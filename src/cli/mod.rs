@@ -39,6 +39,7 @@ mod shell;
 mod signals;
 mod span_arg;
 mod span_outputs;
+mod span_plate;
 mod span_recording;
 mod span_resume;
 mod span_run;
