@@ -8,7 +8,7 @@ use super::plate_args::PhysicalArgs;
 use platefall_core::body::six::{PhysicalPlate6, Plate6};
 use platefall_core::config::Strip;
 use platefall_core::flow3d::Span;
-use platefall_core::param::{check_range, Param};
+use platefall_core::param::{check_range, InputError, Param};
 
 /// Relative difference tolerated between `--span-mm` and `--span` times the chord (round-off of
 /// a span typed in both units).
@@ -40,14 +40,16 @@ fn span_m(args: &PhysicalArgs, strip: &Strip, span: Span) -> Result<f64, ArgErro
         check_range(Param::PlateSpan, mm, 0.0, 1e4, true)?;
         let implied = mm * 1e-3 / strip.chord;
         if (implied / chords - 1.0).abs() > SPAN_AGREEMENT {
-            return Err(ArgError::Invalid {
-                flag: "--span-mm",
-                value: mm.to_string(),
-                accepted: format!(
-                    "the span --span gives, {chords} chords = {} mm (or give --span {implied})",
-                    chords * strip.chord * 1e3
-                ),
-            });
+            let why = format!(
+                "--span gives {chords} chords = {} mm of span; give that, or --span {implied}",
+                chords * strip.chord * 1e3
+            );
+            return Err(InputError::Inconsistent {
+                param: Param::PlateSpan,
+                value: mm,
+                why,
+            }
+            .into());
         }
     }
     Ok(chords * strip.chord)
