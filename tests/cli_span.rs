@@ -261,7 +261,10 @@ fn a_physical_aluminium_plate_in_water_falls_from_rest_and_states_its_derivation
     ] {
         assert!(err.contains(derived), "{derived}: {err}");
     }
-    assert!(out.contains("from rest") && out.contains("regime "), "{out}");
+    assert!(
+        out.contains("from rest") && out.contains("regime "),
+        "{out}"
+    );
     let (header, rows) = table(&csv);
     assert!(header.starts_with("time [c/U],step,dt [c/U],X [c],Y [c]"));
     assert!(rows.iter().flatten().all(|x| x.is_finite()));
@@ -286,7 +289,10 @@ fn a_bad_or_contradicting_span_in_millimetres_is_refused_in_one_line() {
         let (code, out, err) = platefall(&[&ALUMINIUM[..], extra].concat());
         assert_eq!(code, 2, "{extra:?}: {err}");
         assert_eq!(err.trim().lines().count(), 1, "{extra:?}: {err}");
-        assert!(err.contains("--span-mm") && err.contains(says), "{extra:?}: {err}");
+        assert!(
+            err.contains("--span-mm") && err.contains(says),
+            "{extra:?}: {err}"
+        );
         assert!(out.is_empty());
     }
 }

@@ -19,7 +19,11 @@ pub fn thin_plate_inertia(mass: f64, chord: f64, span: f64) -> [f64; 3] {
 /// (the 2-D rectangle's pitch inertia per unit span).
 pub fn box_inertia(mass: f64, chord: f64, thickness: f64, span: f64) -> [f64; 3] {
     let (c2, t2, b2) = (chord * chord, thickness * thickness, span * span);
-    [mass * (t2 + b2) / 12.0, mass * (c2 + b2) / 12.0, mass * (c2 + t2) / 12.0]
+    [
+        mass * (t2 + b2) / 12.0,
+        mass * (c2 + b2) / 12.0,
+        mass * (c2 + t2) / 12.0,
+    ]
 }
 
 /// A uniform rectangular plate: chord c (body x), thickness t (body y), span b (body z) and its
