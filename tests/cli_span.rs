@@ -216,39 +216,34 @@ fn a_flight_stops_after_its_turns() {
 }
 
 /// A thin aluminium plate in water, chord 16 mm, thickness 0.5 mm, released from rest at
-/// θ₀ = 0.1 on the N = 6 grid.
-const ALUMINIUM: [&str; 16] = [
-    "free",
-    "--chord-mm",
-    "16",
-    "--thickness-mm",
-    "0.5",
-    "--plate-density",
-    "2700",
-    "--fluid",
-    "water",
-    "--theta0",
-    "0.1",
-    "--resolution",
-    "6",
-    "--extent",
-    "2",
-    "--no-save",
-];
+/// θ₀ = 0.1 on the N = 6 grid, with `extra` options.
+fn aluminium<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+    let plate = "free --chord-mm 16 --thickness-mm 0.5 --plate-density 2700 --fluid water \
+                 --theta0 0.1 --resolution 6 --extent 2 --no-save";
+    plate
+        .split_whitespace()
+        .chain(extra.iter().copied())
+        .collect()
+}
 
 #[test]
 fn a_physical_aluminium_plate_in_water_falls_from_rest_and_states_its_derivation() {
     let dir = scratch("aluminium");
     let (csv, json) = (dir.join("a.csv"), dir.join("a.json"));
-    let (code, out, err) = platefall(
-        &[
-            &ALUMINIUM[..],
-            &["--span", "2", "--span-mm", "32", "--t-end", "0.3"],
-            &["--progress", "off", "--csv", csv.to_str().unwrap()],
-            &["--summary", json.to_str().unwrap()],
-        ]
-        .concat(),
-    );
+    let (code, out, err) = platefall(&aluminium(&[
+        "--span",
+        "2",
+        "--span-mm",
+        "32",
+        "--t-end",
+        "0.3",
+        "--progress",
+        "off",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--summary",
+        json.to_str().unwrap(),
+    ]));
     assert_eq!(code, 0, "{err}");
     // U = √(1.7049 g t) = 9.1446 cm/s, Re = U c/ν; per chord of span the 2-D m*, m_f*, I*.
     for derived in [
@@ -286,7 +281,7 @@ fn a_bad_or_contradicting_span_in_millimetres_is_refused_in_one_line() {
         (&["--span", "periodic:2", "--span-mm", "30"], "--span 1.875"),
     ];
     for (extra, says) in cases {
-        let (code, out, err) = platefall(&[&ALUMINIUM[..], extra].concat());
+        let (code, out, err) = platefall(&aluminium(extra));
         assert_eq!(code, 2, "{extra:?}: {err}");
         assert_eq!(err.trim().lines().count(), 1, "{extra:?}: {err}");
         assert!(
