@@ -2,7 +2,8 @@
 //! loads per unit span, a finite span has no side force, roll or yaw by its mirror symmetry in z,
 //! the options a 3-D run cannot honour are refused in one line, a 3-D flight writes its CSV
 //! and summary, a physical plate (aluminium in water) falls from rest under strong coupling with
-//! its derivation and regime stated and a bad span refused, a flight stops after `--turns`, and stopped with a checkpoint and resumed writes the
+//! its derivation and regime stated (and resumes exactly) and a bad span refused, a flight stops
+//! after `--turns`, and stopped with a checkpoint and resumed writes the
 //! same CSV and summary as the run straight through (docs/three-d.md "On the command line").
 use std::path::Path;
 
@@ -219,7 +220,7 @@ fn a_flight_stops_after_its_turns() {
 /// θ₀ = 0.1 on the N = 6 grid, with `extra` options.
 fn aluminium<'a>(extra: &[&'a str]) -> Vec<&'a str> {
     let plate = "free --chord-mm 16 --thickness-mm 0.5 --plate-density 2700 --fluid water \
-                 --theta0 0.1 --resolution 6 --extent 2 --no-save";
+                 --theta0 0.1 --resolution 6 --extent 2";
     plate
         .split_whitespace()
         .chain(extra.iter().copied())
@@ -231,6 +232,7 @@ fn a_physical_aluminium_plate_in_water_falls_from_rest_and_states_its_derivation
     let dir = scratch("aluminium");
     let (csv, json) = (dir.join("a.csv"), dir.join("a.json"));
     let (code, out, err) = platefall(&aluminium(&[
+        "--no-save",
         "--span",
         "2",
         "--span-mm",
@@ -274,6 +276,16 @@ fn a_physical_aluminium_plate_in_water_falls_from_rest_and_states_its_derivation
 }
 
 #[test]
+fn a_physical_plates_flight_stopped_and_resumed_writes_the_uninterrupted_runs_outputs() {
+    // The resumed run rebuilds the plate from the checkpoint's command line.
+    let dir = checkpoint_common::scratch("span-aluminium");
+    let flight = aluminium(&["--span", "2", "--t-end", "0.3", "--progress", "off"]);
+    run_full(&dir, &flight);
+    run_stopped(&dir, &flight, "0.1", &[12], &["1"]);
+    assert_same_outputs(&dir);
+}
+
+#[test]
 fn a_bad_or_contradicting_span_in_millimetres_is_refused_in_one_line() {
     let cases: [(&[&str], &str); 3] = [
         (&["--span", "2", "--span-mm", "0"], "accepted (0, 10000]"),
@@ -281,7 +293,7 @@ fn a_bad_or_contradicting_span_in_millimetres_is_refused_in_one_line() {
         (&["--span", "periodic:2", "--span-mm", "30"], "--span 1.875"),
     ];
     for (extra, says) in cases {
-        let (code, out, err) = platefall(&aluminium(extra));
+        let (code, out, err) = platefall(&aluminium(&[extra, &["--no-save"]].concat()));
         assert_eq!(code, 2, "{extra:?}: {err}");
         assert_eq!(err.trim().lines().count(), 1, "{extra:?}: {err}");
         assert!(
