@@ -12,10 +12,9 @@
 use std::f64::consts::TAU;
 use std::io::Write;
 
-use platefall_core::body::six::{
-    thin_plate_inertia, Constraint6, PhysicalPlate6, Plate6, RigidBody6, State6,
-};
+use platefall_core::body::six::{Constraint6, PhysicalPlate6, Plate6, RigidBody6, State6};
 use platefall_core::body::AbStart;
+use platefall_core::config::{Fluid, Strip};
 use platefall_core::flow3d::{
     FlowParams3, FlowSolver3, Grid3, GridSpec3, OuterBc3, Span, Stretch3,
 };
@@ -58,29 +57,27 @@ fn card() -> Result<Setup, Box<dyn std::error::Error>> {
     })
 }
 
-/// Aluminium (2700 kg/m³) 16 × 32 × 0.5 mm in water (1000 kg/m³, ν = 1e-6 m²/s), from rest;
-/// U = √((ρs/ρ − 1) g t) as for the 2-D physical plates (docs/physics.md §2), buoyancy included.
+/// Aluminium (2700 kg/m³) 16 × 32 × 0.5 mm in water (1000 kg/m³, ν = 1e-6 m²/s), from rest: the
+/// 2-D physical plate of the same section ([`Strip`], its U = √((ρs/ρf − 1) g t), docs/physics.md
+/// §2) as a uniform box of span 32 mm, buoyancy included ([`Strip::plate6`]).
 fn aluminium() -> Result<Setup, Box<dyn std::error::Error>> {
-    let (chord, span, thick, rho_s, rho, nu, g) =
-        (0.016, 0.032, 0.0005, 2700.0, 1000.0, 1e-6, 9.81);
-    let speed = f64::sqrt((rho_s / rho - 1.0) * g * thick);
-    let volume = chord * span * thick;
-    let [ix, iy, iz] = thin_plate_inertia(rho_s * volume, chord, span);
-    let (m_unit, i_unit) = (rho * chord.powi(3), rho * chord.powi(5));
-    let plate = Plate6::principal(
-        rho_s * volume / m_unit,
-        [ix / i_unit, iy / i_unit, iz / i_unit],
-        g * chord / (speed * speed),
-        rho * volume / m_unit,
-    )?;
+    let strip = Strip {
+        chord: 0.016,
+        thickness: 0.0005,
+        density: 2700.0,
+        fluid: Fluid::water().overridden(Some(1000.0), Some(1e-6)),
+        gravity: 9.81,
+    };
+    let plate = strip.plate6(0.032)?;
+    let speed = plate.speed;
     Ok(Setup {
-        plate,
+        plate: plate.nondimensional()?,
         start: State6::release(0.0, 0.0, 0.1),
-        span: span / chord,
-        thickness: thick / chord,
-        re: speed * chord / nu,
+        span: plate.aspect_ratio(),
+        thickness: strip.aspect(),
+        re: plate.reynolds(),
         t_release: 0.0,
-        rate_scale: speed / chord,
+        rate_scale: speed / plate.chord,
         speed_scale: speed * 100.0,
         units: ("rad/s", "cm/s"),
         measured: [f64::NAN; 3],

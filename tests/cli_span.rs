@@ -1,7 +1,9 @@
 //! `--span` on the command line (docs/three-d.md "Cases"): a periodic span gives the 2-D plate's
 //! loads per unit span, a finite span has no side force, roll or yaw by its mirror symmetry in z,
 //! the options a 3-D run cannot honour are refused in one line, a 3-D flight writes its CSV
-//! and summary, stops after `--turns`, and stopped with a checkpoint and resumed writes the
+//! and summary, a physical plate (aluminium in water) falls from rest under strong coupling with
+//! its derivation and regime stated (and resumes exactly) and a bad span refused, a flight stops
+//! after `--turns`, and stopped with a checkpoint and resumed writes the
 //! same CSV and summary as the run straight through (docs/three-d.md "On the command line").
 use std::path::Path;
 
@@ -240,5 +242,93 @@ fn a_static_run_writes_its_vtk_series() {
     for k in 0..listed {
         let vts = std::fs::read(vtk.join(format!("flow-{k:06}.vts"))).unwrap();
         assert!(vts.starts_with(b"<?xml") && vts.len() > 1000);
+    }
+}
+
+/// A thin aluminium plate in water, chord 16 mm, thickness 0.5 mm, released from rest at
+/// θ₀ = 0.1 on the N = 6 grid, with `extra` options.
+fn aluminium<'a>(extra: &[&'a str]) -> Vec<&'a str> {
+    let plate = "free --chord-mm 16 --thickness-mm 0.5 --plate-density 2700 --fluid water \
+                 --theta0 0.1 --resolution 6 --extent 2";
+    plate
+        .split_whitespace()
+        .chain(extra.iter().copied())
+        .collect()
+}
+
+#[test]
+fn a_physical_aluminium_plate_in_water_falls_from_rest_and_states_its_derivation() {
+    let dir = scratch("aluminium");
+    let (csv, json) = (dir.join("a.csv"), dir.join("a.json"));
+    let (code, out, err) = platefall(&aluminium(&[
+        "--no-save",
+        "--span",
+        "2",
+        "--span-mm",
+        "32",
+        "--t-end",
+        "0.3",
+        "--progress",
+        "off",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--summary",
+        json.to_str().unwrap(),
+    ]));
+    assert_eq!(code, 0, "{err}");
+    // U = √(1.7049 g t) = 9.1446 cm/s, Re = U c/ν; per chord of span the 2-D m*, m_f*, I*.
+    for derived in [
+        "U = √(|ρs/ρf − 1| g t)",
+        "= 9.1446 cm/s",
+        "Re = U c/ν = 1457.6",
+        "span b = 32 mm = 2.0000 c",
+        "(t/c)(b/c) = 0.1691; m_f* = (t/c)(b/c) = 0.0625",
+        "the span m*(1 + (t/c)²)/12 = 0.01410",
+    ] {
+        assert!(err.contains(derived), "{derived}: {err}");
+    }
+    assert!(
+        out.contains("from rest") && out.contains("regime "),
+        "{out}"
+    );
+    let (header, rows) = table(&csv);
+    assert!(header.starts_with("time [c/U],step,dt [c/U],X [c],Y [c]"));
+    assert!(rows.iter().flatten().all(|x| x.is_finite()));
+    let (first, last) = (&rows[0], rows.last().unwrap());
+    assert!((last[0] - 0.3).abs() < 1e-9);
+    // Heavier than the water it displaces: it sinks from rest.
+    assert!(last[4] < first[4] - 0.01, "Y {} -> {}", first[4], last[4]);
+    let s: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(s["status"], "completed");
+    assert!(s["regime"].is_string(), "{s}");
+}
+
+#[test]
+fn a_physical_plates_flight_stopped_and_resumed_writes_the_uninterrupted_runs_outputs() {
+    // The resumed run rebuilds the plate from the checkpoint's command line.
+    let dir = checkpoint_common::scratch("span-aluminium");
+    let flight = aluminium(&["--span", "2", "--t-end", "0.3", "--progress", "off"]);
+    run_full(&dir, &flight);
+    run_stopped(&dir, &flight, "0.1", &[12], &["1"]);
+    assert_same_outputs(&dir);
+}
+
+#[test]
+fn a_bad_or_contradicting_span_in_millimetres_is_refused_in_one_line() {
+    let cases: [(&[&str], &str); 3] = [
+        (&["--span", "2", "--span-mm", "0"], "accepted (0, 10000]"),
+        (&["--span", "2", "--span-mm", "-5"], "accepted (0, 10000]"),
+        (&["--span", "periodic:2", "--span-mm", "30"], "--span 1.875"),
+    ];
+    for (extra, says) in cases {
+        let (code, out, err) = platefall(&aluminium(&[extra, &["--no-save"]].concat()));
+        assert_eq!(code, 2, "{extra:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{extra:?}: {err}");
+        assert!(
+            err.contains("--span-mm") && err.contains(says),
+            "{extra:?}: {err}"
+        );
+        assert!(out.is_empty());
     }
 }

@@ -38,6 +38,7 @@ pub fn flag(p: Param) -> &'static str {
         Param::Threads => "--threads",
         Param::Chord => "--chord-mm",
         Param::PlateThickness => "--thickness-mm",
+        Param::PlateSpan => "--span-mm",
         Param::PlateDensity => "--plate-density",
         Param::FluidDensity => "--fluid-density",
         Param::Viscosity => "--viscosity",

@@ -40,6 +40,7 @@ mod signals;
 mod span_arg;
 mod span_cost;
 mod span_outputs;
+mod span_plate;
 mod span_recording;
 mod span_resume;
 mod span_run;

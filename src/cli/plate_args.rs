@@ -100,6 +100,16 @@ pub struct PhysicalArgs {
         requires_all = PLATE
     )]
     pub thickness_mm: Option<f64>,
+    /// Plate span b in mm, for a 3-D run (`--span`): with a finite `--span B` it must equal B
+    /// times the chord (B = b/c), with `periodic:P` P times the chord [default: B (or P) times
+    /// the chord].
+    #[arg(
+        long,
+        value_name = "MM",
+        allow_negative_numbers = true,
+        requires_all = ["chord_mm", "thickness_mm", "plate_density", "span"]
+    )]
+    pub span_mm: Option<f64>,
     /// Plate density ρs in kg/m³ (aluminium 2700, steel 7850, PMMA 1190, brass 8500).
     #[arg(
         long,

@@ -12,6 +12,7 @@ use super::resume_args::ResumeArgs;
 use super::resume_checks::{already_over, resumed_config, ResumeRefusal};
 use super::signals::Interrupts;
 use super::span_outputs::{csv_header, Outputs};
+use super::span_plate::flight_plate;
 use super::span_run::{go, span_of, SpanStart};
 use crate::exit::Exit;
 use crate::version::{program_and_commit, program_version as version};
@@ -53,6 +54,7 @@ pub(super) fn resume_span(
     }
     (info.t_end, info.turns) = (config.time.t_end, config.time.turns);
     let (run, cells) = span_of(&config, solver, span)?;
+    let (plate, _) = flight_plate(cmd, span)?;
     let csv = args.csv.clone().or(info.csv.clone());
     let summary = args.summary.clone().or(info.summary.clone());
     let earlier = args.csv_from.clone().or(info.csv.clone());
@@ -73,7 +75,7 @@ pub(super) fn resume_span(
     let interrupts = Interrupts::install()?;
     let path = args.checkpoint_out();
     let start = SpanStart {
-        free: matches!(cmd, Command::Free(_)),
+        plate: matches!(cmd, Command::Free(_)).then_some(plate),
         run,
         out,
         restored: Some(state.run),

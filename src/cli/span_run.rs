@@ -9,17 +9,19 @@ use std::time::Instant;
 use super::args::SolverArgs;
 use super::checkpointer::Checkpointer;
 use super::command::Command;
-use super::config::run_config;
+use super::config::{plate_notes, run_config};
 use super::limits::memory_limit;
 use super::record_args::RecordArgs;
 use super::shape_args::ShapeKind;
 use super::signals::{Interrupts, Phase};
 use super::span_cost::{cost_line, PhaseClock};
 use super::span_outputs::{Outputs, Stop};
+use super::span_plate::flight_plate;
 use super::span_recording::Recording;
 use super::span_steps::{Control, Mover};
 use crate::exit::Exit;
 use crate::version::program_version as version;
+use platefall_core::body::six::Plate6;
 use platefall_core::flow3d::{Grid3, Span, BYTES_PER_CELL};
 use platefall_core::sim::{RunConfig, RunRecord, RunStatus, SimError};
 use platefall_core::sim3::Run3;
@@ -44,8 +46,8 @@ fn unavailable(cmd: &Command) -> Option<&'static str> {
     given.iter().find(|g| g.0).map(|g| g.1)
 }
 
-/// A free fall in 3-D flies the card only.
-fn non_card_plate(cmd: &Command) -> Option<&'static str> {
+/// A free fall in 3-D flies the card or a physical plate, not non-dimensional values.
+fn non_dimensional_plate(cmd: &Command) -> Option<&'static str> {
     let Command::Free(a) = cmd else { return None };
     let b = &a.body;
     let given = [
@@ -55,7 +57,6 @@ fn non_card_plate(cmd: &Command) -> Option<&'static str> {
         (b.gravity.is_some(), "--gravity"),
         (b.displaced_mass.is_some(), "--displaced-mass"),
         (b.torque != 0.0, "--torque"),
-        (b.physical.strip().is_some(), "a physical plate"),
     ];
     given.iter().find(|g| g.0).map(|g| g.1)
 }
@@ -68,11 +69,15 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
     if let Some(flag) = unavailable(cmd) {
         anyhow::bail!("{flag} is not available for 3-D runs yet (with --span)");
     }
-    if let Some(flag) = non_card_plate(cmd) {
-        anyhow::bail!("{flag} is not available for 3-D runs yet: free --span flies the card");
+    if let Some(flag) = non_dimensional_plate(cmd) {
+        anyhow::bail!(
+            "{flag} is not available for 3-D runs yet: free --span flies the card or a physical \
+             plate (--chord-mm, --thickness-mm, --plate-density)"
+        );
     }
     let config = run_config(cmd)?;
     let (run, cells) = span_of(&config, solver, span)?;
+    let plate = flight_plate(cmd, span)?;
     for (flag, path) in [("--csv", &record.csv), ("--summary", &solver.summary)] {
         if let Some(p) = path {
             check_writable(p, false).map_err(|r| anyhow::anyhow!("{flag} {}: {r}", p.display()))?;
@@ -82,11 +87,14 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
         true => Some(checkpointer(&config, solver, record)?),
         false => None,
     };
+    for line in plate_notes(cmd, &config).iter().chain(&plate.1) {
+        eprintln!("{line}");
+    }
     let mut out = Outputs::new(record.csv.as_deref(), cmd, cells)?;
     out.recording = Recording::start(cmd, &run, record, cells)?;
     let interrupts = Interrupts::install()?;
     let start = SpanStart {
-        free: matches!(cmd, Command::Free(_)),
+        plate: matches!(cmd, Command::Free(_)).then_some(plate.0),
         run,
         out,
         restored: None,
@@ -144,8 +152,8 @@ fn checkpointer(
 
 /// A 3-D run ready to step: new, or resumed from a checkpoint.
 pub(super) struct SpanStart<'a> {
-    /// A free case (a flight).
-    pub free: bool,
+    /// The plate a free case flies (None: a static or forced case's flow).
+    pub plate: Option<Plate6>,
     /// The run.
     pub run: Run3<'a>,
     /// The steps kept so far and the CSV.
@@ -181,7 +189,7 @@ pub(super) fn go(mut s: SpanStart, interrupts: &Interrupts) -> anyhow::Result<Ex
     };
     let (run, out) = (&s.run, &mut s.out);
     let result = pool.install(|| {
-        let mut mover = Mover::new(run, s.free, s.restored.as_ref())?;
+        let mut mover = Mover::new(run, s.plate, s.restored.as_ref())?;
         let phases = PhaseClock::new();
         mover.set_phase_marker(phases.marker());
         let (steps_before, started) = (mover.steps(), Instant::now());

@@ -7,7 +7,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::checkpointer::Checkpointer;
 use super::span_outputs::{Outputs, Stop};
-use platefall_core::body::six::PhysicalPlate6;
+use platefall_core::body::six::Plate6;
 use platefall_core::flow3d::{FlowSolver3, PhaseMarker};
 use platefall_core::sim::turns_done;
 use platefall_core::sim3::{unwrapped_pitch, Flight3, Run3, Sample3, Sample6};
@@ -24,13 +24,16 @@ pub(super) enum Mover {
 }
 
 impl Mover {
-    /// The mover of `run` (a flight when `free`) at its start, or put back into `restored`.
-    pub(super) fn new(run: &Run3, free: bool, restored: Option<&SpanRun>) -> Result<Mover, Stop> {
-        let mut mover = if free {
-            let card = PhysicalPlate6::card().nondimensional()?;
-            Mover::Flight(Box::new(run.flight(card)?), 0.0, None)
-        } else {
-            Mover::Flow(Box::new(run.flow()?))
+    /// The mover of `run` (the flight of `plate`, when given) at its start, or put back into
+    /// `restored`.
+    pub(super) fn new(
+        run: &Run3,
+        plate: Option<Plate6>,
+        restored: Option<&SpanRun>,
+    ) -> Result<Mover, Stop> {
+        let mut mover = match plate {
+            Some(plate) => Mover::Flight(Box::new(run.flight(plate)?), 0.0, None),
+            None => Mover::Flow(Box::new(run.flow()?)),
         };
         match (&mut mover, restored) {
             (_, None) => {}

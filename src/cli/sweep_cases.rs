@@ -1,13 +1,14 @@
 //! What the sweep needs to know of the case subcommands, answered by the command line: the
 //! options each one takes (clap's own definitions), and the run an argument vector describes
-//! (parsed and validated exactly as a typed command line; it is the argument vector the case's
-//! child process is started with); and running `platefall sweep` and `platefall converge` with
+//! (parsed and validated exactly as a typed command line, a 3-D flight's plate included; it is
+//! the argument vector the case's child process is started with); and running `platefall sweep` and `platefall converge` with
 //! those answers.
 use clap::CommandFactory;
 
 use super::command::{parse, Cli};
 use super::config::run_config;
 use super::converge_args::ConvergeArgs;
+use super::span_plate::flight_plate;
 use super::sweep_args::SweepArgs;
 use crate::exit::Exit;
 use crate::sweep::{self, converge};
@@ -40,7 +41,12 @@ impl CaseCommands for CommandLineCases {
     fn config(&self, args: &[String]) -> Result<ValidatedConfig, PlanError> {
         let argv = std::iter::once("platefall".to_string()).chain(args.iter().cloned());
         let cli = parse(argv).map_err(|e| PlanError(clap_one_line(&e)))?;
-        run_config(&cli.command).map_err(|e| PlanError(e.to_string()))
+        let config = run_config(&cli.command).map_err(|e| PlanError(e.to_string()))?;
+        // A 3-D flight's plate (its span in millimetres against --span), as the case will check it.
+        if let Some(span) = cli.command.case_args().and_then(|(s, _)| s.span) {
+            flight_plate(&cli.command, span).map_err(|e| PlanError(e.to_string()))?;
+        }
+        Ok(config)
     }
 }
 

@@ -79,6 +79,8 @@ pub enum Param {
     Chord,
     /// Physical plate thickness.
     PlateThickness,
+    /// Physical plate span (3-D).
+    PlateSpan,
     /// Plate density ρs.
     PlateDensity,
     /// Fluid density ρf.
@@ -128,6 +130,7 @@ impl Param {
             Param::Threads => "worker threads (0: one per core)",
             Param::Chord => "plate width (chord, mm)",
             Param::PlateThickness => "plate thickness (mm)",
+            Param::PlateSpan => "plate span (mm)",
             Param::PlateDensity => "plate density (kg/m³)",
             Param::FluidDensity => "fluid density (kg/m³)",
             Param::Viscosity => "fluid kinematic viscosity (mm²/s)",

@@ -9,6 +9,7 @@ mod fluid;
 mod plate;
 mod preset;
 mod strip;
+mod strip3;
 mod units;
 
 pub use build::{defaults, ForcedRotation, FreeFall, PinnedPlate, RunBuilder, StaticPlate};

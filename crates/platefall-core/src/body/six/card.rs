@@ -13,6 +13,40 @@ pub fn thin_plate_inertia(mass: f64, chord: f64, span: f64) -> [f64; 3] {
     [mass * b2 / 12.0, mass * (b2 + c2) / 12.0, mass * c2 / 12.0]
 }
 
+/// The principal moments (I_x, I_y, I_z) of a uniform rectangular box of mass m, chord c (body
+/// x), thickness t (body y) and span b (body z) about its centre (docs/physics.md §9):
+/// m(t² + b²)/12 about the chord, m(c² + b²)/12 about the normal, m(c² + t²)/12 about the span
+/// (the 2-D rectangle's pitch inertia per unit span).
+pub fn box_inertia(mass: f64, chord: f64, thickness: f64, span: f64) -> [f64; 3] {
+    let (c2, t2, b2) = (chord * chord, thickness * thickness, span * span);
+    [
+        mass * (t2 + b2) / 12.0,
+        mass * (c2 + b2) / 12.0,
+        mass * (c2 + t2) / 12.0,
+    ]
+}
+
+/// A uniform rectangular plate: chord c (body x), thickness t (body y), span b (body z) and its
+/// density ρs, in the units of the fluid it is put in.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Slab {
+    /// Chord c.
+    pub chord: f64,
+    /// Thickness t.
+    pub thickness: f64,
+    /// Span b.
+    pub span: f64,
+    /// Density ρs.
+    pub density: f64,
+}
+
+impl Slab {
+    /// The volume c t b.
+    pub fn volume(&self) -> f64 {
+        self.chord * self.thickness * self.span
+    }
+}
+
 /// A physical rigid plate in a physical fluid, in any consistent units (the card's are ft, slug,
 /// s), principal axes along the body axes.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -33,6 +67,10 @@ pub struct PhysicalPlate6 {
     pub speed: f64,
     /// Gravity g.
     pub gravity: f64,
+    /// The displaced fluid mass ρ × volume (buoyancy; 0 for the card, whose weight is the
+    /// apparent weight).
+    #[serde(default)]
+    pub displaced: f64,
 }
 
 impl PhysicalPlate6 {
@@ -58,6 +96,25 @@ impl PhysicalPlate6 {
             viscosity: 1.5723e-4,
             speed: 3.0,
             gravity,
+            displaced: 0.0,
+        }
+    }
+
+    /// A uniform rectangular plate ([`box_inertia`]) in a fluid of density ρ and kinematic
+    /// viscosity ν under gravity g, on the reference speed U (docs/physics.md §2, §9), with its
+    /// displaced fluid mass ρ c t b: the weight is (m − m_f) g as for the 2-D physical plate.
+    pub fn uniform(slab: &Slab, density: f64, viscosity: f64, gravity: f64, speed: f64) -> Self {
+        let mass = slab.density * slab.volume();
+        Self {
+            chord: slab.chord,
+            span: slab.span,
+            mass,
+            inertia: box_inertia(mass, slab.chord, slab.thickness, slab.span),
+            density,
+            viscosity,
+            speed,
+            gravity,
+            displaced: density * slab.volume(),
         }
     }
 
@@ -81,8 +138,9 @@ impl PhysicalPlate6 {
     }
 
     /// The non-dimensional body (module docs of [`super`]): m* = m/(ρc³), I* = I/(ρc⁵),
-    /// g* = g c/U², no displaced mass (the weight is the apparent weight, as for the 2-D card).
-    /// Dividing m* and I*_z by b/c gives the 2-D m/(ρc²b) and I/(ρc⁴b).
+    /// g* = g c/U², m_f* = m_f/(ρc³) (0 for the card: its weight is the apparent weight, as for
+    /// the 2-D card). Dividing m*, m_f* and I*_z by b/c gives the 2-D m/(ρc²b), m_f/(ρc²b) and
+    /// I/(ρc⁴b).
     ///
     /// # Errors
     /// [`SixError::Dimension`] for the first of chord, span, density, viscosity and speed that is not
@@ -107,7 +165,7 @@ impl PhysicalPlate6 {
             self.mass / mass_unit,
             Matrix3::from_diagonal(&moments.into()),
             self.gravity * self.chord / (self.speed * self.speed),
-            0.0,
+            self.displaced / mass_unit,
         )
     }
 

@@ -28,7 +28,7 @@ mod rigid;
 mod state;
 mod strong;
 
-pub use card::{thin_plate_inertia, PhysicalPlate6};
+pub use card::{box_inertia, thin_plate_inertia, PhysicalPlate6, Slab};
 pub use dynamics::{explicit_acceleration, Accel6, Constraint6, Loads6};
 pub use error::SixError;
 pub use plate::Plate6;
