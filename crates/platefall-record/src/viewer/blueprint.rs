@@ -163,17 +163,22 @@ pub(crate) fn default_blueprint(fit: &ViewFit) -> (Blueprint, ViewProperties) {
     let bottom = Horizontal::new([closeup, trajectory.into()]);
     let left = Vertical::new([wake, bottom.into()]).with_row_shares([1.1, 1.0]);
     let right = Vertical::new([coefficients, motion, info.into()]).with_row_shares([1.0, 1.0, 1.1]);
-    let blueprint =
-        Blueprint::new(Horizontal::new([left.into(), right.into()]).with_column_shares([3.0, 2.0]))
-            .with_blueprint_panel(BlueprintPanel::new().with_state(PanelState::Collapsed))
-            .with_selection_panel(SelectionPanel::new().with_state(PanelState::Collapsed))
-            .with_time_panel(
-                TimePanel::new()
-                    .with_timeline("time")
-                    .with_state(PanelState::Collapsed),
-            )
-            .with_auto_views(false);
-    (blueprint, props)
+    let root = Horizontal::new([left.into(), right.into()]).with_column_shares([3.0, 2.0]);
+    (with_panels(root), props)
+}
+
+/// The layout `root` with the blueprint, selection and time panels collapsed (the views get the
+/// room), the time panel on the `time` timeline, and no views added automatically.
+pub(super) fn with_panels(root: Horizontal) -> Blueprint {
+    Blueprint::new(root)
+        .with_blueprint_panel(BlueprintPanel::new().with_state(PanelState::Collapsed))
+        .with_selection_panel(SelectionPanel::new().with_state(PanelState::Collapsed))
+        .with_time_panel(
+            TimePanel::new()
+                .with_timeline("time")
+                .with_state(PanelState::Collapsed),
+        )
+        .with_auto_views(false)
 }
 
 /// Sends the default blueprint with its view properties (active and default).

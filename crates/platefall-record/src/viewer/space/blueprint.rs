@@ -9,14 +9,14 @@
 //! │                                      │ [Config|Summary|Status|Solver] │
 //! └──────────────────────────────────────┴────────────────────────────────┘
 //! ```
-use rerun::blueprint::components::PanelState;
 use rerun::blueprint::{
-    Blueprint, BlueprintPanel, ContainerLike, Horizontal, SelectionPanel, Spatial3DView, Tabs,
-    TextDocumentView, TextLogView, TimePanel, TimeSeriesView, Vertical,
+    Blueprint, ContainerLike, Horizontal, Spatial3DView, Tabs, TextDocumentView, TextLogView,
+    TimeSeriesView, Vertical,
 };
 use rerun::{RecordingStream, RecordingStreamResult};
 
 use super::paths3;
+use crate::viewer::blueprint::with_panels;
 use crate::viewer::view_properties::{send_with_properties, ViewProperties};
 
 /// The layout above.
@@ -44,17 +44,9 @@ fn layout() -> Blueprint {
         series("Motion", paths3::MOTION),
         info.into(),
     ]);
-    Blueprint::new(
+    with_panels(
         Horizontal::new([ContainerLike::from(flight), right.into()]).with_column_shares([3.0, 2.0]),
     )
-    .with_blueprint_panel(BlueprintPanel::new().with_state(PanelState::Collapsed))
-    .with_selection_panel(SelectionPanel::new().with_state(PanelState::Collapsed))
-    .with_time_panel(
-        TimePanel::new()
-            .with_timeline("time")
-            .with_state(PanelState::Collapsed),
-    )
-    .with_auto_views(false)
 }
 
 /// Sends the layout, active and default.
