@@ -82,11 +82,6 @@ impl Viewer {
     }
 }
 
-/// Refuses every --serve memory limit: this build has no viewer.
-///
-/// # Errors
-///
-/// Always: [`ViewerRefusal`] "this build has no viewer".
 /// Stand-in for the 3-D recording: cannot be opened.
 pub enum Viewer3 {}
 
@@ -115,6 +110,11 @@ impl Viewer3 {
     }
 }
 
+/// Refuses every --serve memory limit: this build has no viewer.
+///
+/// # Errors
+///
+/// Always: [`ViewerRefusal`] "this build has no viewer".
 pub fn check_memory_limit(_limit: &str) -> Result<(), ViewerRefusal> {
     Err(ViewerRefusal("this build has no viewer".into()))
 }
