@@ -121,27 +121,30 @@ fn a_periodic_flight_writes_its_csv_summary_and_recording() {
     } else {
         &["--no-save"]
     };
-    let args = [&[
-        "free",
-        "--span",
-        "periodic:0.25",
-        "--resolution",
-        "8",
-        "--t-end",
-        "0.3",
-        "--develop",
-        "0.1",
-        "--extent",
-        "3",
-        "--progress",
-        "off",
-        "--csv",
-        csv.to_str().unwrap(),
-        "--summary",
-        json.to_str().unwrap(),
-        "--field-every",
-        "0.1",
-    ][..], save]
+    let args = [
+        &[
+            "free",
+            "--span",
+            "periodic:0.25",
+            "--resolution",
+            "8",
+            "--t-end",
+            "0.3",
+            "--develop",
+            "0.1",
+            "--extent",
+            "3",
+            "--progress",
+            "off",
+            "--csv",
+            csv.to_str().unwrap(),
+            "--summary",
+            json.to_str().unwrap(),
+            "--field-every",
+            "0.1",
+        ][..],
+        save,
+    ]
     .concat();
     let (code, out, err) = platefall(&args);
     assert_eq!(code, 0, "{err}");

@@ -3,7 +3,7 @@
 //! singular (pure-Neumann) problems with inconsistent right-hand sides, plates that block faces,
 //! warm starts and typed errors. Small grids stretched like a plate's (h = c/N at the plate,
 //! growth 1.1 outward).
-use platefall_core::poisson3::{plate_axis, FaceCoefs3, Poisson3, PoissonError, Side};
+use platefall_core::poisson3::{plate_axis, FaceCoefs3, Poisson3, PoissonError, Side, Target};
 
 /// A plate's grid at resolution N: chord and span of N cells of width 1/N, growth 1.1 out to
 /// `extent` chords; y has the plate's cell and one on each side. The plate (if asked) decouples
@@ -553,4 +553,73 @@ fn warm_start_from_the_previous_step_saves_iterations() {
         warm.iterations + 2 <= cold.iterations,
         "warm {warm:?}, cold {cold:?}"
     );
+}
+
+#[test]
+fn the_weighted_target_stops_on_the_largest_weighted_residual() {
+    // Weights 1 / volume (the flow's Δt / V_P with Δt = 1): the solve stops once the largest
+    // |r_P| w_P of the true residual is within the bound, in fewer iterations than the relative
+    // 2-norm test that implies the same bound (‖r‖₂ max w ≤ bound); bad weights are refused.
+    let (coefs, solid) = plate_grid(8, 3.0, false, true);
+    let mut solver = Poisson3::new(&coefs).unwrap();
+    let n = solver.cells();
+    let mut b = field(n, 21);
+    b.iter_mut()
+        .zip(&solid)
+        .filter(|(_, &s)| s)
+        .for_each(|(v, _)| *v = 0.0);
+    let fluid: Vec<bool> = solid.iter().map(|s| !s).collect();
+    remove_mean(&mut b, &fluid);
+    let [nx, ny, _] = coefs.shape();
+    let weight: Vec<f64> = (0..n)
+        .map(|p| {
+            let (i, j, k) = (p % nx, (p / nx) % ny, p / (nx * ny));
+            1.0 / (coefs.dx[i] * coefs.dy[j] * coefs.dz[k])
+        })
+        .collect();
+    let w_max = weight.iter().fold(0.0f64, |m, &w| m.max(w));
+    let bound = 1e-6
+        * b.iter()
+            .zip(&weight)
+            .fold(0.0f64, |m, (b, w)| m.max(b.abs() * w));
+    let mut x = vec![0.0; n];
+    let target = Target::WeightedMax {
+        weight: &weight,
+        tol: bound,
+    };
+    let weighted = solver.solve_to(&b, &mut x, target).unwrap();
+    let mut r = reference_apply(&coefs, &x);
+    r.iter_mut().zip(&b).for_each(|(r, b)| *r = b - *r);
+    let worst = r
+        .iter()
+        .zip(&weight)
+        .fold(0.0f64, |m, (r, w)| m.max(r.abs() * w));
+    let mut y = vec![0.0; n];
+    let relative = solver
+        .solve(&b, &mut y, bound / (norm(&b) * w_max))
+        .unwrap();
+    eprintln!("weighted {weighted:?} (largest weighted residual {worst:.3e} ≤ {bound:.3e}), relative {relative:?}");
+    assert!(worst <= bound * (1.0 + 1e-6), "{worst} > {bound}");
+    assert!(
+        weighted.iterations < relative.iterations,
+        "{weighted:?} {relative:?}"
+    );
+    for (weight, tol) in [
+        (&weight[1..], bound),
+        (&weight[..], 0.0),
+        (&weight[..], f64::NAN),
+    ] {
+        let target = Target::WeightedMax { weight, tol };
+        assert!(solver.solve_to(&b, &mut x, target).is_err());
+    }
+    let mut negative = weight.clone();
+    negative[3] = -1.0;
+    let target = Target::WeightedMax {
+        weight: &negative,
+        tol: bound,
+    };
+    assert!(matches!(
+        solver.solve_to(&b, &mut x, target),
+        Err(PoissonError::BadTolerance(_))
+    ));
 }

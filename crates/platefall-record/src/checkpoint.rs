@@ -27,8 +27,9 @@ use super::output::{remove_orphaned_partials, OutputError, PendingFile};
 
 /// The first eight bytes of every checkpoint.
 pub const MAGIC: &[u8; 8] = b"PFCKPT\r\n";
-/// The layout's version; a file of another one is refused (2: the state of a 2-D or a 3-D run).
-pub const FORMAT_VERSION: u32 = 2;
+/// The layout's version; a file of another one is refused (3: the state of a 2-D or a 3-D run,
+/// the 3-D flow with the pressures of its last two levels).
+pub const FORMAT_VERSION: u32 = 3;
 /// Bytes after the magic and version: the payload's length and its checksum.
 const TRAILER: usize = 12;
 const HEADER: usize = 12;

@@ -1,17 +1,20 @@
 //! The flow's pressure equation solved by [`Poisson3`] (conjugate gradients preconditioned by a
 //! multigrid V-cycle, docs/pressure-3d.md), behind the [`PoissonSolve`] boundary.
 //!
-//! [`Poisson3`] stops on the relative residual ‖b − A p‖₂ / ‖b‖₂; the flow stops on the largest
-//! cell divergence the correction leaves, max_P |r_P| Δt / V_P. Because
-//! max_P |r_P| w_P ≤ ‖r‖₂ max_P w_P, the relative tolerance tol / (‖b‖₂ max w) is sufficient; the
-//! true weighted residual is measured after the solve and the solve is repeated from its own
-//! result (a warm start) in the rare case that round-off leaves it above the tolerance.
-use crate::poisson3::{FaceCoefs3, Poisson3, PoissonError};
+//! The flow stops on the largest cell divergence the correction leaves, max_P |r_P| Δt / V_P, and
+//! [`Poisson3`] stops on that same quantity ([`Target::WeightedMax`]) for its own residual, aiming
+//! at a fraction of the tolerance. The true weighted residual is measured after the solve and the
+//! solve is repeated from its own result (a warm start) in the rare case that round-off leaves it
+//! above the tolerance.
+use crate::poisson3::{FaceCoefs3, Poisson3, PoissonError, Target};
 
 use super::project::{flat, weighted_residual, PoissonOperator, PoissonSolve, SolveStats, Stop};
 
-/// Relative tolerances below this are not asked of [`Poisson3`] (round-off floor of its residual).
+/// Bounds below this fraction of the right-hand side's largest weighted entry are not asked of
+/// [`Poisson3`] (the round-off floor of its residual).
 const REL_FLOOR: f64 = 1e-14;
+/// The first solve aims at this fraction of the tolerance, each repeat at a tenth of the last.
+const AIM: f64 = 0.5;
 /// Solves from the previous result before giving up on the divergence tolerance.
 const ATTEMPTS: usize = 3;
 
@@ -55,14 +58,20 @@ impl PoissonSolve for MultigridCg {
             divergence: self.weighted_residual(b, p, stop.weight),
             ..SolveStats::default()
         };
-        let norm_b = b.iter().map(|v| v * v).sum::<f64>().sqrt();
-        let w_max = stop.weight.iter().fold(0.0f64, |m, &w| m.max(w));
-        let mut rel = (stop.tol / (norm_b * w_max)).clamp(REL_FLOOR, 0.5);
+        let floor = REL_FLOOR
+            * b.iter()
+                .zip(stop.weight)
+                .fold(0.0f64, |m, (b, w)| m.max(b.abs() * w));
+        let mut aim = (AIM * stop.tol).max(floor);
         for _ in 0..ATTEMPTS {
             if stats.divergence <= stop.tol || stats.iterations >= stop.max_iterations {
                 break;
             }
-            match self.solver.solve(b, p, rel) {
+            let target = Target::WeightedMax {
+                weight: stop.weight,
+                tol: aim,
+            };
+            match self.solver.solve_to(b, p, target) {
                 Ok(s) => stats.iterations += s.iterations,
                 // Both leave the last iterate in p: a breakdown at round-off (pᵀAp ≤ 0 with a
                 // residual near the floor) is judged, like a stall, by the divergence left.
@@ -73,7 +82,7 @@ impl PoissonSolve for MultigridCg {
                 Err(_) => break,
             }
             stats.divergence = self.weighted_residual(b, p, stop.weight);
-            rel = (rel * 0.01).max(REL_FLOOR);
+            aim = (aim * 0.1).max(floor);
         }
         stats.converged = stats.divergence <= stop.tol;
         stats

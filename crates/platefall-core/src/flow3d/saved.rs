@@ -1,7 +1,7 @@
 //! [`FlowState3`]: the 3-D flow's state between two steps as plain data, for checkpoints
 //! (docs/three-d.md "On the command line"), and [`FlowSolver3`]'s save and restore.
 //!
-//! A step reads the velocity, the pressure (the solve's warm start), the old right-hand side
+//! A step reads the velocity, the pressures of the last two levels (the solve's warm start), the old right-hand side
 //! Hⁿ⁻¹ (AB2), the frame, the clock (t, the last Δt, the step count), the last right-hand side's
 //! statistics (the next stable Δt) and the loads (the flight's next body step). The new
 //! right-hand side H is recomputed by the next step at every point it uses (elsewhere it stays
@@ -27,6 +27,8 @@ pub struct FlowState3 {
     pub h_old: [Vec<f64>; 3],
     /// Cell pressures.
     pub p: Vec<f64>,
+    /// Cell pressures of the level before.
+    pub p_old: Vec<f64>,
     /// The body's motion at the current level.
     pub frame: Frame3,
     /// Time.
@@ -52,6 +54,7 @@ impl FlowSolver3 {
             vel: self.vel.clone(),
             h_old: self.h_old.clone(),
             p: self.p.clone(),
+            p_old: self.p_old.clone(),
             frame: self.frame,
             t: self.t,
             dt_prev: self.dt_prev,
@@ -89,6 +92,11 @@ impl FlowSolver3 {
                 lengths(&self.h_old),
             ),
             ("the pressure", vec![s.p.len()], vec![self.p.len()]),
+            (
+                "the earlier pressure",
+                vec![s.p_old.len()],
+                vec![self.p_old.len()],
+            ),
         ] {
             if saved != ours {
                 return mismatch(what, format!("{saved:?}"), format!("{ours:?}"));
@@ -97,6 +105,7 @@ impl FlowSolver3 {
         self.vel.clone_from(&s.vel);
         self.h_old.clone_from(&s.h_old);
         self.p.clone_from(&s.p);
+        self.p_old.clone_from(&s.p_old);
         self.frame = s.frame;
         (self.t, self.dt_prev, self.steps) = (s.t, s.dt_prev, s.steps);
         self.rhs_stats = RhsStats {

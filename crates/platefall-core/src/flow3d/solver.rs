@@ -47,6 +47,8 @@ pub struct FlowSolver3 {
     pub(super) h_old: [Vec<f64>; 3],
     /// Cell pressures (zero in the plate), index i + nx (j + ny k).
     pub(super) p: Vec<f64>,
+    /// The pressures of the level before (the warm start's extrapolation).
+    pub(super) p_old: Vec<f64>,
     /// The pressure equation's right-hand side and the divergence weights Δt / V.
     rhs: Vec<f64>,
     weight: Vec<f64>,
@@ -88,6 +90,7 @@ impl FlowSolver3 {
             h: std::array::from_fn(|_| layout.zeros()),
             h_old: std::array::from_fn(|_| layout.zeros()),
             p: vec![0.0; cells],
+            p_old: vec![0.0; cells],
             rhs: vec![0.0; cells],
             weight: vec![0.0; cells],
             pressure: Box::new(MultigridCg::new(op)?),
@@ -249,8 +252,20 @@ impl FlowSolver3 {
         outer!(self).set_normals(&mut self.vel, self.t + dt, dt);
     }
 
-    /// Solves for pⁿ⁺¹ (warm start from pⁿ) and corrects the velocity.
+    /// Solves for pⁿ⁺¹ and corrects the velocity. The solve starts from the linear extrapolation
+    /// pⁿ + (Δt / Δtⁿ⁻¹)(pⁿ − pⁿ⁻¹) (from pⁿ on the first step), whose error is O(Δt²) where pⁿ's
+    /// own is O(Δt): fewer iterations to the same tolerance.
     fn project(&mut self, dt: f64) -> Result<(), Flow3Error> {
+        let ratio = if self.steps > 0 {
+            dt / self.dt_prev
+        } else {
+            0.0
+        };
+        for (p, old) in self.p.iter_mut().zip(self.p_old.iter_mut()) {
+            let now = *p;
+            *p = now + ratio * (now - *old);
+            *old = now;
+        }
         let vel = [&self.vel[0][..], &self.vel[1][..], &self.vel[2][..]];
         let op = self.pressure.operator();
         cell_fluxes(vel, &self.metrics, &self.layout, op, &mut self.rhs);

@@ -36,16 +36,19 @@ mod coefs;
 mod error;
 mod level;
 mod pieces;
+mod target;
 mod vecops;
 
 pub use axis::plate_axis;
 pub use coefs::{FaceCoefs3, Side};
 pub use error::{PoissonError, SolveStats};
+pub use target::Target;
 
 use coarsen::Transfer;
 use coarsest::Coarsest;
 use level::Level;
 use pieces::Pieces;
+use target::Test;
 use vecops::Planes;
 
 /// At most this many cells on the coarsest level (its dense factor is solved every cycle).
@@ -187,13 +190,22 @@ impl Poisson3 {
         x: &mut [f64],
         tol: f64,
     ) -> Result<SolveStats, PoissonError> {
+        self.solve_to(rhs, x, Target::Relative(tol))
+    }
+
+    /// [`Poisson3::solve`] stopping on `target`: the relative residual, or the largest weighted
+    /// residual. Allocates nothing.
+    pub fn solve_to(
+        &mut self,
+        rhs: &[f64],
+        x: &mut [f64],
+        target: Target,
+    ) -> Result<SolveStats, PoissonError> {
         self.check_len("rhs", rhs.len())?;
         self.check_len("x", x.len())?;
         coefs::check_finite("rhs", rhs)?;
         coefs::check_finite("x", x)?;
-        if !(tol > 0.0 && tol < 1.0) {
-            return Err(PoissonError::BadTolerance(tol));
-        }
+        let test = Test::new(target, self.cells())?;
         self.r.copy_from_slice(rhs);
         self.pieces.remove_means(&mut self.r, &mut self.sums);
         let norm_b = self.planes.dot(&self.r, &self.r).sqrt();
@@ -206,7 +218,7 @@ impl Poisson3 {
         }
         self.levels[0].apply(x, &mut self.q);
         self.planes.axpy(-1.0, &self.q, &mut self.r);
-        let iterations = self.iterate(x, norm_b, tol)?;
+        let iterations = self.iterate(x, norm_b, &test)?;
         self.pieces.remove_means(x, &mut self.sums);
         // The true residual, from x (b̂ rebuilt in z).
         self.z.copy_from_slice(rhs);
@@ -232,9 +244,9 @@ impl Poisson3 {
     }
 
     /// Preconditioned conjugate gradients from the residual in `r`; returns the iterations.
-    fn iterate(&mut self, x: &mut [f64], norm_b: f64, tol: f64) -> Result<usize, PoissonError> {
-        let mut rel = self.planes.dot(&self.r, &self.r).sqrt() / norm_b;
-        if rel <= tol {
+    fn iterate(&mut self, x: &mut [f64], norm_b: f64, test: &Test) -> Result<usize, PoissonError> {
+        let mut norm_r = self.planes.dot(&self.r, &self.r).sqrt();
+        if test.met(&mut self.planes, &self.r, norm_r, norm_b) {
             return Ok(0);
         }
         self.precondition_residual();
@@ -253,8 +265,8 @@ impl Poisson3 {
             let alpha = rz / curvature;
             self.planes.axpy(alpha, &self.p, x);
             self.planes.axpy(-alpha, &self.q, &mut self.r);
-            rel = self.planes.dot(&self.r, &self.r).sqrt() / norm_b;
-            if rel <= tol {
+            norm_r = self.planes.dot(&self.r, &self.r).sqrt();
+            if test.met(&mut self.planes, &self.r, norm_r, norm_b) {
                 return Ok(iterations);
             }
             self.precondition_residual();
@@ -264,7 +276,7 @@ impl Poisson3 {
         }
         Err(PoissonError::NotConverged {
             iterations: MAX_ITERATIONS,
-            residual: rel,
+            residual: norm_r / norm_b,
         })
     }
 

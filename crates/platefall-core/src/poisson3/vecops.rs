@@ -34,6 +34,24 @@ impl Planes {
         self.partial.iter().sum()
     }
 
+    /// max |r_P| w_P.
+    pub fn max_weighted(&mut self, r: &[f64], w: &[f64]) -> f64 {
+        let plane = self.plane;
+        let f = |(k, s): (usize, &mut f64)| {
+            let (r, w) = (&r[k * plane..][..plane], &w[k * plane..][..plane]);
+            *s = r
+                .iter()
+                .zip(w)
+                .fold(0.0, |m: f64, (r, w)| m.max(r.abs() * w));
+        };
+        if parallel(r.len()) {
+            self.partial.par_iter_mut().enumerate().for_each(f);
+        } else {
+            self.partial.iter_mut().enumerate().for_each(f);
+        }
+        self.partial.iter().fold(0.0, |m: f64, &s| m.max(s))
+    }
+
     /// y += α x.
     pub fn axpy(&self, alpha: f64, x: &[f64], y: &mut [f64]) {
         let f = |(y, x): (&mut [f64], &[f64])| {
