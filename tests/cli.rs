@@ -15,6 +15,16 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         ("static --re -5", "-5"),
         ("static --re 0", "(0, 100000]"),
         ("static --resolution 0", "4..=1024"),
+        // Negative whole numbers are values, refused by name (not "unexpected argument").
+        ("static --resolution -16", "'-16' for '--resolution"),
+        (
+            "free --threads -1",
+            "-1 is negative: accepted a whole number, 0 or more",
+        ),
+        (
+            "ensemble --from x.ckpt --members -3 --perturbation 1e-6 --output o",
+            "'-3' for '--members",
+        ),
         ("static --alpha NaN", "NaN"),
         ("static --alpha 4", "[-3.14"),
         ("static --t-end -1", "--t-end"),

@@ -20,8 +20,9 @@ pub struct SolverArgs {
     /// Reynolds number U c / ν [default: 5000, or the preset's for pinned/free].
     #[arg(long, allow_negative_numbers = true)]
     pub re: Option<f64>,
-    /// Cells per chord N (h = c/N). The dissertation used 16; the free-fall rotation rate changes by 17 %
-    /// between N = 32 and 64 (docs/verification.md), so the default is 64.
+    /// Cells per chord N (h = c/N), 4 to 1024 (2 to 1024 with --span). The dissertation used 16; the
+    /// free-fall rotation rate changes by 17 % between N = 32 and 64 (docs/verification.md), so the
+    /// default is 64.
     #[arg(long, default_value_t = defaults::RESOLUTION)]
     pub resolution: usize,
     /// End time in convective times c/U from the impulsive start [default depends on the case].
@@ -76,7 +77,7 @@ pub struct SolverArgs {
     /// along them implicitly.
     #[arg(long, default_value_t = defaults::NEAR, allow_negative_numbers = true)]
     pub near_y: f64,
-    /// Worker threads for the run (0: one per core); the results do not depend on it.
+    /// Worker threads for the run, 0 to 256 (0: one per core); the results do not depend on it.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
     #[command(flatten)]

@@ -2,7 +2,7 @@
 //! that parses an argument vector.
 use std::ffi::OsString;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 
 use super::args::{ForcedArgs, FreeArgs, PinnedArgs, SolverArgs, StaticArgs};
 use super::bench_args::BenchArgs;
@@ -102,5 +102,6 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    Cli::try_parse_from(argv)
+    let matches = super::whole::negatives_named(Cli::command()).try_get_matches_from(argv)?;
+    Cli::from_arg_matches(&matches)
 }

@@ -47,6 +47,7 @@ mod span_run;
 mod span_steps;
 mod sweep_args;
 mod sweep_cases;
+mod whole;
 
 use std::process::ExitCode;
 
