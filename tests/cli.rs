@@ -18,6 +18,11 @@ fn bad_values_are_refused_naming_the_value_and_range() {
         // Negative whole numbers are values, refused by name (not "unexpected argument").
         ("static --resolution -16", "'-16' for '--resolution"),
         (
+            "static --t-end 3s",
+            "seconds need a plate with physical units",
+        ),
+        ("free --t-end 10m", "or of seconds (10.5s)"),
+        (
             "free --threads -1",
             "-1 is negative: accepted a whole number, 0 or more",
         ),
@@ -287,7 +292,7 @@ fn a_physical_plate_prints_its_derivation_and_reports_in_physical_units() {
             "--resolution",
             "8",
             "--t-end",
-            "0.5",
+            "0.055s",
         ],
     );
     assert_eq!(code, 0, "{err}");
@@ -303,8 +308,15 @@ fn a_physical_plate_prints_its_derivation_and_reports_in_physical_units() {
     assert!((v["velocity_scale_m_s"].as_f64().unwrap() - 0.09145).abs() < 1e-4);
     assert!((v["re"].as_f64().unwrap() - 911.0).abs() < 0.5);
     assert!(v["regime"].is_string(), "{v}");
-    // Released from rest by default: it sinks.
-    assert!(v["t_end"].as_f64().unwrap() >= 0.5 - 1e-9);
+    // The end in seconds is t_end c/U: 0.055 s on a 10 mm chord at U ≈ 9.1 cm/s, about 0.5 c/U.
+    let (u, t_end) = (
+        v["velocity_scale_m_s"].as_f64().unwrap(),
+        v["t_end"].as_f64().unwrap(),
+    );
+    assert!(
+        (t_end - 0.055 * u / 0.010).abs() < 1e-9,
+        "t_end {t_end} c/U"
+    );
 }
 
 /// A thin ellipse's tips (radius of curvature b²/a = t²/2 = c/128 at t/c = 1/8) are a quarter

@@ -3,6 +3,7 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 
+use super::end_time::EndTime;
 use super::flags::ArgError;
 use super::plate_args::{BodyArgs, CoupledBuilder};
 use super::record_args::RecordArgs;
@@ -11,7 +12,7 @@ use super::span_arg::parse_span;
 use platefall_core::config::{defaults, RunBuilder};
 use platefall_core::flow::FarFieldScheme;
 use platefall_core::flow3d::Span;
-use platefall_core::sim::ValidatedConfig;
+use platefall_core::sim::{ReferenceScales, ValidatedConfig};
 use platefall_core::sim3::{EXTENT3, GROWTH3};
 
 /// Options shared by every case.
@@ -25,9 +26,10 @@ pub struct SolverArgs {
     /// default is 64.
     #[arg(long, default_value_t = defaults::RESOLUTION)]
     pub resolution: usize,
-    /// End time in convective times c/U from the impulsive start [default depends on the case].
+    /// End time from the impulsive start, in convective times c/U (60), or in seconds for a plate
+    /// with physical units (10.5s) [default depends on the case].
     #[arg(long, allow_negative_numbers = true)]
-    pub t_end: Option<f64>,
+    pub t_end: Option<EndTime>,
     /// Write the run summary as JSON to this file.
     #[arg(long, value_name = "FILE")]
     pub summary: Option<PathBuf>,
@@ -255,11 +257,13 @@ impl SolverArgs {
     }
 
     /// Applies the solver options to a run of any case; `physical` is a physical plate's t/c,
-    /// the section's thickness unless --thickness is given.
+    /// the section's thickness unless --thickness is given; `scales` the plate's physical units
+    /// (an end time in seconds needs them).
     fn apply<C>(
         &self,
         mut b: RunBuilder<C>,
         physical: Option<f64>,
+        scales: Option<ReferenceScales>,
     ) -> Result<RunBuilder<C>, ArgError> {
         b = b
             .resolution(self.resolution)
@@ -281,7 +285,7 @@ impl SolverArgs {
             b = b.far_field(scheme);
         }
         if let Some(t) = self.t_end {
-            b = b.t_end(t);
+            b = b.t_end(t.convective(scales)?);
         }
         Ok(b)
     }
@@ -291,7 +295,7 @@ impl StaticArgs {
     /// The validated run.
     pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
         let b = RunBuilder::static_plate(self.alpha).kick(self.kick);
-        Ok(self.solver.apply(b, None)?.build()?)
+        Ok(self.solver.apply(b, None, None)?.build()?)
     }
 }
 
@@ -299,7 +303,7 @@ impl ForcedArgs {
     /// The validated run.
     pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
         let b = RunBuilder::forced(self.rate).spinup(self.spinup);
-        Ok(self.solver.apply(b, None)?.build()?)
+        Ok(self.solver.apply(b, None, None)?.build()?)
     }
 }
 
@@ -307,12 +311,12 @@ impl PinnedArgs {
     /// The validated run.
     pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
         let plate = self.body.plate()?;
-        let physical = plate.thickness();
+        let (physical, scales) = (plate.thickness(), plate.scales());
         let b = RunBuilder::pinned(plate)
             .alpha0(self.alpha0)
             .speed(self.v0)
             .body_options(&self.body);
-        Ok(self.solver.apply(b, physical)?.build()?)
+        Ok(self.solver.apply(b, physical, scales)?.build()?)
     }
 }
 
@@ -320,7 +324,7 @@ impl FreeArgs {
     /// The validated run.
     pub fn config(&self) -> Result<ValidatedConfig, ArgError> {
         let plate = self.body.plate()?;
-        let physical = plate.thickness();
+        let (physical, scales) = (plate.thickness(), plate.scales());
         let mut b = RunBuilder::free(plate)
             .gamma0(self.gamma0)
             .body_options(&self.body);
@@ -331,6 +335,6 @@ impl FreeArgs {
         if let Some(v0) = self.v0 {
             b = b.v0(v0);
         }
-        Ok(self.solver.apply(b, physical)?.build()?)
+        Ok(self.solver.apply(b, physical, scales)?.build()?)
     }
 }

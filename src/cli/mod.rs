@@ -20,6 +20,7 @@ mod checkpointer;
 mod command;
 mod config;
 mod converge_args;
+mod end_time;
 mod ensemble_args;
 mod flags;
 mod info;
