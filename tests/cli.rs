@@ -229,6 +229,9 @@ fn summary_json_has_the_stable_keys() {
     ]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("status completed"), "{out}");
+    // The end-of-run list of outputs names the summary.
+    let listed = format!("summary: {}", summary.display());
+    assert!(err.lines().any(|l| l == listed), "{err}");
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&summary).unwrap()).unwrap();
     for key in [

@@ -149,6 +149,15 @@ fn a_periodic_flight_writes_its_csv_summary_and_recording() {
     let (code, out, err) = platefall(&args);
     assert_eq!(code, 0, "{err}");
     assert!(err.contains("cells"), "{err}");
+    for listed in [
+        format!("summary: {}", json.display()),
+        format!("csv: {} (", csv.display()),
+    ] {
+        assert!(
+            err.lines().any(|l| l.starts_with(&listed)),
+            "{listed}: {err}"
+        );
+    }
     if cfg!(feature = "viewer") {
         assert!(err.contains("recording: "), "{err}");
         assert!(std::fs::metadata(&rrd).unwrap().len() > 1000);

@@ -4,6 +4,24 @@ use std::path::Path;
 use crate::exit::Exit;
 use platefall_core::sim::RunStatus;
 use platefall_post::summary::Summary;
+use platefall_record::output::write_atomically;
+
+/// Writes the `--summary` JSON at `path` (if asked): its line for the end-of-run list of outputs,
+/// or the failure added to `failures`.
+pub fn write_summary(
+    path: Option<&Path>,
+    json: &str,
+    failures: &mut Vec<String>,
+) -> Option<String> {
+    let path = path?;
+    match write_atomically("--summary", path, json.as_bytes()) {
+        Ok(_) => Some(format!("summary: {}", path.display())),
+        Err(e) => {
+            failures.push(e.to_string());
+            None
+        }
+    }
+}
 
 /// The exit code of a finished run, with its one-line messages on stderr; `checkpointed`: the
 /// checkpoint a stopped run wrote.

@@ -20,7 +20,6 @@ use platefall_post::report::report;
 use platefall_post::summary::summarize;
 use platefall_record::checkpoint::ResumeInfo;
 use platefall_record::messages::{RunInfo, RunOutcome};
-use platefall_record::output::write_atomically;
 use platefall_record::{Logger, LoggerReport, RecordOptions};
 
 /// A case, validated and ready to run.
@@ -115,12 +114,12 @@ pub(super) fn execute(
     let summary_json = super::provenance::summary_json(&invocation, &summary);
     let (log_report, mut failures) = finish_logger(logger, &rec.status, &summary_json, &text);
     failures.extend(ckpt_failure);
-    if let Some(path) = &r.summary_path {
-        if let Err(e) = write_atomically("--summary", path, summary_json.as_bytes()) {
-            failures.push(e.to_string());
-        }
-    }
+    let summary_line =
+        super::outcome::write_summary(r.summary_path.as_deref(), &summary_json, &mut failures);
     print_report(&text, log_report.as_ref());
+    if let Some(line) = summary_line {
+        eprintln!("{line}");
+    }
     if let Some(c) = r.checkpoints.as_ref().filter(|c| c.written > 0) {
         eprintln!("{}", c.report_line());
     }

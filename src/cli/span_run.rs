@@ -29,7 +29,6 @@ use platefall_post::summary3::{report3, summarize3};
 use platefall_record::checkpoint::{ResumeInfo, SpanRun};
 use platefall_record::files::check_writable;
 use platefall_record::messages::RunOutcome;
-use platefall_record::output::write_atomically;
 use platefall_record::provenance::Invocation;
 
 /// The first option given that a 3-D run cannot honour yet.
@@ -274,14 +273,12 @@ fn finish(
     }
     if let Some(w) = out.csv {
         match w.finish(&status) {
-            Ok((path, rows)) => eprintln!("CSV: {} ({rows} rows)", path.display()),
+            Ok((path, rows)) => eprintln!("csv: {} ({rows} rows)", path.display()),
             Err(e) => failures.push(e.to_string()),
         }
     }
-    if let Some(p) = summary_path {
-        if let Err(e) = write_atomically("--summary", p, json.as_bytes()) {
-            failures.push(e.to_string());
-        }
+    if let Some(line) = super::outcome::write_summary(summary_path, &json, &mut failures) {
+        eprintln!("{line}");
     }
     print!("{text}");
     let saved = ended.checkpoint.as_deref();
