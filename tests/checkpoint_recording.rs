@@ -34,3 +34,40 @@ fn a_resumed_run_records_a_continuation_with_the_same_recording_id() {
     assert!(steps(&next) > 0, "the continuation holds the later steps");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_resumed_three_dimensional_run_records_a_continuation_with_the_same_recording_id() {
+    let dir = scratch("recording3");
+    let case = [
+        "free",
+        "--span",
+        "1",
+        "--resolution",
+        "6",
+        "--extent",
+        "2",
+        "--develop",
+        "0.1",
+        "--t-end",
+        "0.3",
+        "--save",
+        "c.rrd",
+        "--progress",
+        "off",
+    ];
+    let stop = ["--checkpoint-every", "0.1", "--stop-after-steps", "12"];
+    expect_code(&run(&dir, &[&case[..], &stop].concat()), 75);
+    expect_code(&run(&dir, &["resume", "free.ckpt", "--progress", "off"]), 0);
+    let first = record_common::decode(&dir.join("c.rrd"));
+    let next = record_common::decode(&dir.join("c-from-12.rrd"));
+    assert!(
+        first.has_footer && next.has_footer,
+        "both recordings are complete"
+    );
+    assert_eq!(first.recording_ids.len(), 1, "{:?}", first.recording_ids);
+    assert_eq!(first.recording_ids, next.recording_ids);
+    let steps = |d: &record_common::Decoded| d.scalars("/coefficients/C_L").len();
+    assert_eq!(steps(&first), 12);
+    assert!(steps(&next) > 0, "the continuation holds the later steps");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -136,13 +136,10 @@ fn a_periodic_flight_writes_its_csv_summary_and_recording() {
             "3",
             "--progress",
             "off",
-            "--csv",
-            csv.to_str().unwrap(),
-            "--summary",
-            json.to_str().unwrap(),
             "--field-every",
             "0.1",
         ][..],
+        &tables(&csv, &json),
         save,
     ]
     .concat();
@@ -263,6 +260,12 @@ fn a_static_run_writes_its_vtk_series() {
     }
 }
 
+/// `--csv CSV --summary JSON`.
+fn tables<'a>(csv: &'a std::path::Path, json: &'a std::path::Path) -> [&'a str; 4] {
+    let text = |p: &'a std::path::Path| p.to_str().unwrap();
+    ["--csv", text(csv), "--summary", text(json)]
+}
+
 /// A thin aluminium plate in water, chord 16 mm, thickness 0.5 mm, released from rest at
 /// θ₀ = 0.1 on the N = 6 grid, with `extra` options.
 fn aluminium<'a>(extra: &[&'a str]) -> Vec<&'a str> {
@@ -278,21 +281,22 @@ fn aluminium<'a>(extra: &[&'a str]) -> Vec<&'a str> {
 fn a_physical_aluminium_plate_in_water_falls_from_rest_and_states_its_derivation() {
     let dir = scratch("aluminium");
     let (csv, json) = (dir.join("a.csv"), dir.join("a.json"));
-    let (code, out, err) = platefall(&aluminium(&[
-        "--no-save",
-        "--span",
-        "2",
-        "--span-mm",
-        "32",
-        "--t-end",
-        "0.3",
-        "--progress",
-        "off",
-        "--csv",
-        csv.to_str().unwrap(),
-        "--summary",
-        json.to_str().unwrap(),
-    ]));
+    let options = [
+        &[
+            "--no-save",
+            "--span",
+            "2",
+            "--span-mm",
+            "32",
+            "--t-end",
+            "0.3",
+            "--progress",
+            "off",
+        ][..],
+        &tables(&csv, &json),
+    ]
+    .concat();
+    let (code, out, err) = platefall(&aluminium(&options));
     assert_eq!(code, 0, "{err}");
     // U = √(1.7049 g t) = 9.1446 cm/s, Re = U c/ν; per chord of span the 2-D m*, m_f*, I*.
     for derived in [

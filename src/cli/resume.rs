@@ -153,7 +153,7 @@ fn partial_with_rows(csv: &Path, rows: u64) -> Option<PathBuf> {
 }
 
 /// The continuation recording beside `rrd`: `NAME-from-STEP.rrd`.
-fn continuation(rrd: &Path, steps: u64) -> PathBuf {
+pub(super) fn continuation(rrd: &Path, steps: u64) -> PathBuf {
     let stem = rrd.file_stem().map(|s| s.to_string_lossy().into_owned());
     let stem = stem.unwrap_or_else(|| "run".into());
     let base = stem.split("-from-").next().unwrap_or(&stem).to_string();

@@ -176,7 +176,7 @@ fn resume_info(p: &Prepared, every: Option<f64>, id: String) -> anyhow::Result<R
 }
 
 /// A recording id of its own for a run that may be continued (the continuation takes it).
-fn new_recording_id() -> String {
+pub(super) fn new_recording_id() -> String {
     let nanos = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map(|d| d.as_nanos())

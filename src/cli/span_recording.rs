@@ -1,6 +1,8 @@
 //! The recording of a 3-D run (docs/three-d.md "Recording"): opened from the run's recording
 //! options, fed every step and a snapshot of the flow at the `--field-every` cadence, committed
 //! with the run's outcome.
+use std::path::PathBuf;
+
 use platefall_core::flow3d::{FlowSolver3, Span};
 use platefall_core::sim3::Run3;
 use platefall_record::messages::{FieldUse, RunOutcome};
@@ -27,13 +29,14 @@ pub(super) struct Recording {
 }
 
 impl Recording {
-    /// Opens the recording and the VTK series the options ask for (`recordings/<case>-3d.rrd`
-    /// by default), or none without either.
+    /// Opens the recording and the VTK series the options ask for ([`save_path`] by default),
+    /// or none without either; `id` the recording id (a continuation's is its run's).
     pub(super) fn start(
         cmd: &Command,
         run: &Run3,
         record: &RecordArgs,
         cells: usize,
+        id: Option<String>,
     ) -> anyhow::Result<Option<Recording>> {
         let rerun = record.uses_rerun();
         if !rerun && record.vtk.is_none() {
@@ -41,12 +44,10 @@ impl Recording {
         }
         let case = run.config.case.kind();
         let mut args = record.clone();
-        if args.save.is_none() {
-            args.save =
-                Some(RecordArgs::default_save_path(case).with_file_name(format!("{case}-3d.rrd")));
-        }
+        args.save = Some(save_path(record, run));
         args.field_every = Some(record.field_every.unwrap_or(FIELD_EVERY_3D));
-        let opts = args.resolve(case, &[])?;
+        let mut opts = args.resolve(case, &[])?;
+        opts.recording_id = id;
         let span = run.grid.span;
         let half_span = 0.5 * span.length();
         let title = match span {
@@ -118,6 +119,14 @@ impl Recording {
         }
         report.errors.is_empty()
     }
+}
+
+/// Where a 3-D run's recording goes: `--save`, else `recordings/<case>-3d.rrd`.
+pub(super) fn save_path(record: &RecordArgs, run: &Run3) -> PathBuf {
+    let case = run.config.case.kind();
+    record.save.clone().unwrap_or_else(|| {
+        RecordArgs::default_save_path(case).with_file_name(format!("{case}-3d.rrd"))
+    })
 }
 
 /// What the viewer side of a recording says at the end; a --serve server is shut down.

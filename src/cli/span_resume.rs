@@ -13,10 +13,12 @@ use super::resume_checks::{already_over, resumed_config, ResumeRefusal};
 use super::signals::Interrupts;
 use super::span_outputs::{csv_header, Outputs};
 use super::span_plate::flight_plate;
+use super::span_recording::Recording;
 use super::span_run::{go, span_of, SpanStart};
 use crate::exit::Exit;
 use crate::version::{program_and_commit, program_version as version};
 use platefall_core::sim::turns_done;
+use platefall_core::sim3::Run3;
 use platefall_record::checkpoint::{ResumeInfo, SpanRun, SpanState};
 use platefall_record::csv3::check_prefix3;
 use platefall_record::provenance::Invocation;
@@ -40,7 +42,6 @@ pub(super) fn resume_span(
     for (given, flag) in [
         (args.perturb_omega.is_some(), "--perturb-omega"),
         (args.average_from_turn.is_some(), "--average-from-turn"),
-        (args.save.is_some(), "--save"),
     ] {
         if given {
             anyhow::bail!("{flag} is not available for 3-D runs yet (a --span checkpoint)");
@@ -67,7 +68,8 @@ pub(super) fn resume_span(
         check_prefix3(earlier, csv_header(cmd), state.steps())
             .map_err(|why| ResumeRefusal::Csv(why.to_string()))?;
     }
-    let out = Outputs::resume(csv_pair, cmd, cells, &state)?;
+    let mut out = Outputs::resume(csv_pair, cmd, cells, &state)?;
+    out.recording = continuation(args, cmd, &info, (&run, cells), state.steps())?;
     let abs = |p: &Option<PathBuf>| p.as_deref().map(std::path::absolute).transpose();
     (info.csv, info.summary) = (abs(&csv)?, abs(&summary)?);
     info.every = given_every.or(info.every);
@@ -87,6 +89,31 @@ pub(super) fn resume_span(
         invocation: Invocation::of_this_process(program_and_commit(), Vec::new()),
     };
     go(start, &interrupts)
+}
+
+/// The continuation recording of a run that recorded: `--save`, else the run's recording with
+/// `-from-STEP` before `.rrd`, with the run's recording id (the viewer opens both as one run);
+/// none with `--no-save` or for a run that did not record.
+fn continuation(
+    args: &ResumeArgs,
+    cmd: &Command,
+    info: &ResumeInfo,
+    (run, cells): (&Run3, usize),
+    steps: u64,
+) -> anyhow::Result<Option<Recording>> {
+    let save = match (&args.save, &info.save) {
+        _ if args.no_save => None,
+        (Some(p), _) => Some(p.clone()),
+        (None, Some(p)) => Some(super::resume::continuation(p, steps)),
+        (None, None) => None,
+    };
+    let Some((save, (_, record))) = save.zip(cmd.case_args()) else {
+        return Ok(None);
+    };
+    let mut record = record.clone();
+    (record.save, record.no_save, record.vtk) = (Some(save), false, None);
+    (record.serve, record.web, record.spawn, record.connect) = (false, false, false, None);
+    Recording::start(cmd, run, &record, cells, info.recording_id.clone())
 }
 
 /// Whether the run in `state` is already over under `time`'s end and turn limit.

@@ -17,7 +17,7 @@ use super::signals::{Interrupts, Phase};
 use super::span_cost::{cost_line, PhaseClock};
 use super::span_outputs::{Outputs, Stop};
 use super::span_plate::flight_plate;
-use super::span_recording::Recording;
+use super::span_recording::{save_path, Recording};
 use super::span_steps::{Control, Mover};
 use crate::exit::Exit;
 use crate::version::program_version as version;
@@ -82,15 +82,17 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
             check_writable(p, false).map_err(|r| anyhow::anyhow!("{flag} {}: {r}", p.display()))?;
         }
     }
+    // A recording that may be continued by `resume` has an id of its own.
+    let id = record.uses_rerun().then(super::run::new_recording_id);
     let checkpoints = match solver.checkpoint.enabled() {
-        true => Some(checkpointer(&config, solver, record)?),
+        true => Some(checkpointer(&config, solver, record, (&run, &id))?),
         false => None,
     };
     for line in plate_notes(cmd, &config).iter().chain(&plate.1) {
         eprintln!("{line}");
     }
     let mut out = Outputs::new(record.csv.as_deref(), cmd, cells)?;
-    out.recording = Recording::start(cmd, &run, record, cells)?;
+    out.recording = Recording::start(cmd, &run, record, cells, id)?;
     let interrupts = Interrupts::install()?;
     let start = SpanStart {
         plate: matches!(cmd, Command::Free(_)).then_some(plate.0),
@@ -119,11 +121,13 @@ pub(super) fn span_of<'a>(
 }
 
 /// The checkpoints of a new 3-D run: the file (`--checkpoint`, else beside the CSV or the
-/// summary, else `<case>.ckpt`) and what resuming needs.
+/// summary, else `<case>.ckpt`) and what resuming needs (with the recording's path and id, when
+/// the run records, for a continuation).
 fn checkpointer(
     config: &RunConfig,
     solver: &SolverArgs,
     record: &RecordArgs,
+    (run, id): (&Run3, &Option<String>),
 ) -> anyhow::Result<Checkpointer> {
     let every = solver.checkpoint.every()?;
     let no_recording = RecordArgs {
@@ -141,9 +145,9 @@ fn checkpointer(
         t_end: config.time.t_end,
         turns: config.time.turns,
         csv: abs(record.csv.as_deref())?,
-        save: None,
+        save: abs(id.as_ref().map(|_| save_path(record, run)).as_deref())?,
         summary: abs(summary)?,
-        recording_id: None,
+        recording_id: id.clone(),
         every,
     };
     Ok(Checkpointer::new(path, every, 0.0, info, version()))

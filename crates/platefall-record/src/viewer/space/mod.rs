@@ -163,10 +163,10 @@ impl Scene3 {
                 TimeColumn::new_duration_secs(TIMELINE_TIME, p.iter().map(|s| s.t)),
             ]
         };
-        for (k, (path, _)) in series(first).iter().enumerate() {
-            let values = p.iter().map(|s| series(s)[k].1);
+        for (k, (parent, name, _)) in series(first).iter().enumerate() {
+            let values = p.iter().map(|s| series(s)[k].2);
             self.rec.send_columns(
-                *path,
+                format!("{parent}/{name}"),
                 index(),
                 Scalars::new(values).columns_of_unit_batches()?,
             )?;
@@ -270,26 +270,27 @@ impl Scene3 {
     }
 }
 
-/// The series of a step: entity and value.
-fn series(s: &Step3) -> [(&'static str, f64); 15] {
+/// The series of a step: parent entity ([`paths3`]), name under it, value.
+fn series(s: &Step3) -> [(&'static str, &'static str, f64); 15] {
+    use paths3::{COEFFICIENTS as C, MOTION as M, SOLVER as S};
     let c = s.coefficients;
     let speed = s.velocity.iter().map(|v| v * v).sum::<f64>().sqrt();
     [
-        ("/coefficients/C_L", c[0]),
-        ("/coefficients/C_D", c[1]),
-        ("/coefficients/C_S", c[2]),
-        ("/coefficients/C_roll", c[3]),
-        ("/coefficients/C_yaw", c[4]),
-        ("/coefficients/C_pitch", c[5]),
-        ("/motion/roll", s.angles[0]),
-        ("/motion/yaw", s.angles[1]),
-        ("/motion/pitch", s.angles[2]),
-        ("/motion/omega_x", s.omega[0]),
-        ("/motion/omega_y", s.omega[1]),
-        ("/motion/omega_z", s.omega[2]),
-        ("/motion/speed", speed),
-        ("/solver/iterations", s.iterations as f64),
-        ("/solver/divergence", s.divergence),
+        (C, "C_L", c[0]),
+        (C, "C_D", c[1]),
+        (C, "C_S", c[2]),
+        (C, "C_roll", c[3]),
+        (C, "C_yaw", c[4]),
+        (C, "C_pitch", c[5]),
+        (M, "roll", s.angles[0]),
+        (M, "yaw", s.angles[1]),
+        (M, "pitch", s.angles[2]),
+        (M, "omega_x", s.omega[0]),
+        (M, "omega_y", s.omega[1]),
+        (M, "omega_z", s.omega[2]),
+        (M, "speed", speed),
+        (S, "iterations", s.iterations as f64),
+        (S, "divergence", s.divergence),
     ]
 }
 
