@@ -209,6 +209,15 @@ impl RecordArgs {
         Path::new("recordings").join(format!("{case}.rrd"))
     }
 
+    /// How progress is shown: off with --quiet, else --progress.
+    pub fn progress_mode(&self) -> ProgressMode {
+        if self.quiet {
+            ProgressMode::Off
+        } else {
+            self.progress.into()
+        }
+    }
+
     /// True if the run opens a Rerun recording or stream (a file, a server or a viewer).
     pub fn uses_rerun(&self) -> bool {
         !self.no_save || self.serves() || self.connect.is_some() || self.spawn
@@ -251,11 +260,7 @@ impl RecordArgs {
         }
         self.check_paths(save.as_deref(), &others)?;
         let csv = self.csv.clone();
-        let progress = if self.quiet {
-            ProgressMode::Off
-        } else {
-            self.progress.into()
-        };
+        let progress = self.progress_mode();
         Ok(RecordOptions {
             save,
             serve,

@@ -13,6 +13,7 @@ use platefall_record::checkpoint::SpanState;
 use platefall_record::csv3::{Csv3Writer, CSV3_HEADER, CSV6_HEADER};
 use platefall_record::messages3::Step3;
 use platefall_record::output::OutputError;
+use platefall_record::progress::Progress;
 
 /// What a 3-D run keeps of its steps.
 pub(super) struct Outputs {
@@ -23,6 +24,8 @@ pub(super) struct Outputs {
     pub(super) cells: usize,
     /// The 3-D recording, if the run has one.
     pub(super) recording: Option<Recording>,
+    /// Progress on stderr (simulated time, steps per second, the time left).
+    pub(super) progress: Option<Progress>,
 }
 
 /// The header of the CSV of `cmd`'s 3-D run.
@@ -43,6 +46,7 @@ impl Outputs {
             attitude: Vec::new(),
             cells,
             recording: None,
+            progress: None,
         })
     }
 
@@ -64,6 +68,7 @@ impl Outputs {
             attitude: state.attitude.clone(),
             cells,
             recording: None,
+            progress: None,
         })
     }
 
@@ -74,8 +79,11 @@ impl Outputs {
         }
     }
 
-    /// Keeps a step's planar and lateral samples.
+    /// Keeps a step's planar and lateral samples (and shows the progress).
     pub(super) fn keep(&mut self, planar: StepSample, c: [f64; 3]) {
+        if let Some(p) = &mut self.progress {
+            p.update(&planar);
+        }
         self.planar.push(planar);
         self.lateral.push(lateral_sample(&planar, c[0], c[1], c[2]));
     }

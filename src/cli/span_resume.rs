@@ -21,6 +21,8 @@ use platefall_core::sim::turns_done;
 use platefall_core::sim3::Run3;
 use platefall_record::checkpoint::{ResumeInfo, SpanRun, SpanState};
 use platefall_record::csv3::check_prefix3;
+use platefall_record::options::ProgressMode;
+use platefall_record::progress::Progress;
 use platefall_record::provenance::Invocation;
 
 /// Goes on with the 3-D run of `cmd` (the checkpoint's command line) from `state`.
@@ -70,6 +72,12 @@ pub(super) fn resume_span(
     }
     let mut out = Outputs::resume(csv_pair, cmd, cells, &state)?;
     out.recording = continuation(args, cmd, &info, (&run, cells), state.steps())?;
+    let mode = match (args.quiet, args.progress, cmd.case_args()) {
+        (false, Some(p), _) => p.into(),
+        (false, None, Some((_, record))) => record.progress_mode(),
+        _ => ProgressMode::Off,
+    };
+    out.progress = Some(Progress::new(mode, config.time.t_end));
     let abs = |p: &Option<PathBuf>| p.as_deref().map(std::path::absolute).transpose();
     (info.csv, info.summary) = (abs(&csv)?, abs(&summary)?);
     info.every = given_every.or(info.every);

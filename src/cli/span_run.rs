@@ -29,6 +29,7 @@ use platefall_post::summary3::{report3, summarize3};
 use platefall_record::checkpoint::{ResumeInfo, SpanRun};
 use platefall_record::files::check_writable;
 use platefall_record::messages::RunOutcome;
+use platefall_record::progress::Progress;
 use platefall_record::provenance::Invocation;
 
 /// The first option given that a 3-D run cannot honour yet.
@@ -93,6 +94,7 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
     }
     let mut out = Outputs::new(record.csv.as_deref(), cmd, cells)?;
     out.recording = Recording::start(cmd, &run, record, cells, id)?;
+    out.progress = Some(Progress::new(record.progress_mode(), config.time.t_end));
     let interrupts = Interrupts::install()?;
     let start = SpanStart {
         plate: matches!(cmd, Command::Free(_)).then_some(plate.0),
@@ -218,6 +220,9 @@ pub(super) fn go(mut s: SpanStart, interrupts: &Interrupts) -> anyhow::Result<Ex
         Err(Stop::Output(e)) => (RunStatus::OutputFailed(e.to_string()), false),
         Err(Stop::Checkpoint(e)) => (RunStatus::OutputFailed(e), false),
     };
+    if let Some(mut p) = s.out.progress.take() {
+        p.finish(status.name());
+    }
     let saved = saved.then(|| s.checkpoints.as_ref().map(|c| c.path().to_path_buf()));
     if let Some(c) = s.checkpoints.as_ref().filter(|c| c.written > 0) {
         eprintln!("{}", c.report_line());

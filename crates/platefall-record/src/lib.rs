@@ -161,7 +161,7 @@ pub mod messages;
 pub mod messages3;
 pub mod options;
 pub mod output;
-mod progress;
+pub mod progress;
 pub mod provenance;
 pub mod recorded;
 pub mod recorder3;

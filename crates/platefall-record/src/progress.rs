@@ -18,7 +18,7 @@ enum Display {
 }
 
 /// Progress display; see the module docs.
-pub(crate) struct Progress {
+pub struct Progress {
     display: Display,
     t_end: f64,
     start: Instant,
@@ -32,7 +32,7 @@ pub(crate) struct Progress {
 }
 
 /// "1h02m03s" / "2m03s" / "3.4s".
-pub(crate) fn human_duration(d: Duration) -> String {
+pub fn human_duration(d: Duration) -> String {
     let s = d.as_secs_f64();
     if s < 60.0 {
         format!("{s:.1}s")
@@ -45,6 +45,7 @@ pub(crate) fn human_duration(d: Duration) -> String {
 }
 
 impl Progress {
+    /// Progress in `mode` towards the end time `t_end` (a non-positive one: no end shown).
     pub fn new(mode: ProgressMode, t_end: f64) -> Self {
         let t_end = if t_end.is_finite() && t_end > 0.0 {
             t_end
