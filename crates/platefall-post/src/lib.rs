@@ -47,6 +47,7 @@ pub mod keys;
 pub mod painter;
 pub mod phase;
 pub mod plot_range;
+pub mod precision;
 pub mod regime;
 pub mod report;
 pub mod resample;

@@ -192,6 +192,7 @@ fn coupled_part(case: &Case, sum: &Summary, r: &mut String) -> Vec<Row> {
         pm(sum.mean_omega, sum.ci.mean_omega_ci95, 3),
         pm(sum.mean_gamma, sum.ci.mean_gamma_ci95, 3)
     ));
+    r.push_str(&crate::precision::planning_line(&sum.ci).unwrap_or_default());
     r.push_str(&fall_part(sum));
     if matches!(case, Case::Pinned { .. }) {
         let rate = pm(sum.mean_omega.map(f64::abs), sum.ci.mean_omega_ci95, 3);
