@@ -19,6 +19,7 @@ mod branch;
 mod checkpointer;
 mod command;
 mod config;
+mod continued;
 mod converge_args;
 mod end_time;
 mod ensemble_args;

@@ -98,7 +98,7 @@ fn resumed_outputs(
     r.csv = args.csv.clone().or(run_own(&info.csv));
     r.save = match (&args.save, run_own(&info.save)) {
         (Some(p), _) => Some(p.clone()),
-        (None, Some(p)) => Some(continuation(&p, steps)),
+        (None, Some(p)) => Some(super::continued::continuation(&p, steps)),
         (None, None) => None,
     };
     r.no_save = args.no_save || r.save.is_none();
@@ -152,10 +152,3 @@ fn partial_with_rows(csv: &Path, rows: u64) -> Option<PathBuf> {
     found.pop()
 }
 
-/// The continuation recording beside `rrd`: `NAME-from-STEP.rrd`.
-pub(super) fn continuation(rrd: &Path, steps: u64) -> PathBuf {
-    let stem = rrd.file_stem().map(|s| s.to_string_lossy().into_owned());
-    let stem = stem.unwrap_or_else(|| "run".into());
-    let base = stem.split("-from-").next().unwrap_or(&stem).to_string();
-    rrd.with_file_name(format!("{base}-from-{steps}.rrd"))
-}

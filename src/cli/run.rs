@@ -63,7 +63,7 @@ pub fn run_case(cmd: &Command) -> anyhow::Result<Exit> {
     let interrupts = Interrupts::install()?;
     let checkpoints = match p.checkpoint.take() {
         Some(path) => {
-            let id = new_recording_id();
+            let id = super::continued::new_recording_id();
             p.opts.recording_id = Some(id.clone());
             let info = resume_info(&p, solver.checkpoint.every()?, id)?;
             Some(Checkpointer::new(path, info.every, 0.0, info, version()))
@@ -173,15 +173,6 @@ fn resume_info(p: &Prepared, every: Option<f64>, id: String) -> anyhow::Result<R
         recording_id: Some(id),
         every,
     })
-}
-
-/// A recording id of its own for a run that may be continued (the continuation takes it).
-pub(super) fn new_recording_id() -> String {
-    let nanos = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map(|d| d.as_nanos())
-        .unwrap_or(0);
-    format!("platefall-{}-{nanos}", std::process::id())
 }
 
 /// Validates everything before anything runs or is written: values, resource limits, paths.

@@ -112,7 +112,7 @@ fn continuation(
     let save = match (&args.save, &info.save) {
         _ if args.no_save => None,
         (Some(p), _) => Some(p.clone()),
-        (None, Some(p)) => Some(super::resume::continuation(p, steps)),
+        (None, Some(p)) => Some(super::continued::continuation(p, steps)),
         (None, None) => None,
     };
     let Some((save, (_, record))) = save.zip(cmd.case_args()) else {

@@ -84,7 +84,7 @@ pub fn run_span(cmd: &Command, span: Span) -> anyhow::Result<Exit> {
         }
     }
     // A recording that may be continued by `resume` has an id of its own.
-    let id = record.uses_rerun().then(super::run::new_recording_id);
+    let id = record.uses_rerun().then(super::continued::new_recording_id);
     let checkpoints = match solver.checkpoint.enabled() {
         true => Some(checkpointer(&config, solver, record, (&run, &id))?),
         false => None,
