@@ -151,4 +151,3 @@ fn partial_with_rows(csv: &Path, rows: u64) -> Option<PathBuf> {
     found.sort();
     found.pop()
 }
-
