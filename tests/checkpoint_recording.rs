@@ -21,18 +21,7 @@ fn a_resumed_run_records_a_continuation_with_the_same_recording_id() {
     let stop = ["--checkpoint-every", "0.5", "--stop-after-steps", "100"];
     expect_code(&run(&dir, &[&case[..], &stop].concat()), 75);
     expect_code(&run(&dir, &["resume", "a.ckpt", "-q"]), 0);
-    let first = record_common::decode(&dir.join("a.rrd"));
-    let next = record_common::decode(&dir.join("a-from-100.rrd"));
-    assert!(
-        first.has_footer && next.has_footer,
-        "both recordings are complete"
-    );
-    assert_eq!(first.recording_ids.len(), 1, "{:?}", first.recording_ids);
-    assert_eq!(first.recording_ids, next.recording_ids);
-    let steps = |d: &record_common::Decoded| d.scalars("/solver/dt").len();
-    assert_eq!(steps(&first), 100);
-    assert!(steps(&next) > 0, "the continuation holds the later steps");
-    let _ = std::fs::remove_dir_all(&dir);
+    assert_continues(&dir, ["a.rrd", "a-from-100.rrd"], "/solver/dt", 100);
 }
 
 #[test]
@@ -58,16 +47,22 @@ fn a_resumed_three_dimensional_run_records_a_continuation_with_the_same_recordin
     let stop = ["--checkpoint-every", "0.1", "--stop-after-steps", "12"];
     expect_code(&run(&dir, &[&case[..], &stop].concat()), 75);
     expect_code(&run(&dir, &["resume", "free.ckpt", "--progress", "off"]), 0);
-    let first = record_common::decode(&dir.join("c.rrd"));
-    let next = record_common::decode(&dir.join("c-from-12.rrd"));
+    assert_continues(&dir, ["c.rrd", "c-from-12.rrd"], "/coefficients/C_L", 12);
+}
+
+/// Both recordings in `dir` are complete and share one recording id; the first holds `steps`
+/// samples of the per-step `series`, the continuation the later ones. Removes `dir`.
+fn assert_continues(dir: &std::path::Path, [first, next]: [&str; 2], series: &str, steps: usize) {
+    let first = record_common::decode(&dir.join(first));
+    let next = record_common::decode(&dir.join(next));
     assert!(
         first.has_footer && next.has_footer,
         "both recordings are complete"
     );
     assert_eq!(first.recording_ids.len(), 1, "{:?}", first.recording_ids);
     assert_eq!(first.recording_ids, next.recording_ids);
-    let steps = |d: &record_common::Decoded| d.scalars("/coefficients/C_L").len();
-    assert_eq!(steps(&first), 12);
-    assert!(steps(&next) > 0, "the continuation holds the later steps");
-    let _ = std::fs::remove_dir_all(&dir);
+    let count = |d: &record_common::Decoded| d.scalars(series).len();
+    assert_eq!(count(&first), steps);
+    assert!(count(&next) > 0, "the continuation holds the later steps");
+    let _ = std::fs::remove_dir_all(dir);
 }
