@@ -39,29 +39,55 @@ fn a_static_run_resumes_exactly() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A light plate in water, described physically (c/U = 0.175 s).
+const WATER: [&str; 15] = [
+    "free",
+    "--chord-mm",
+    "16",
+    "--thickness-mm",
+    "0.5",
+    "--plate-density",
+    "2700",
+    "--fluid",
+    "water",
+    "--theta0",
+    "0.3",
+    "--resolution",
+    "16",
+    "--t-end",
+    "2",
+];
+
 #[test]
 fn a_light_plate_in_water_resumes_exactly() {
     let dir = scratch("water");
-    let case = [
-        "free",
-        "--chord-mm",
-        "16",
-        "--thickness-mm",
-        "0.5",
-        "--plate-density",
-        "2700",
-        "--fluid",
-        "water",
-        "--theta0",
-        "0.3",
-        "--resolution",
-        "16",
-        "--t-end",
-        "2",
-    ];
-    run_full(&dir, &case);
-    run_stopped(&dir, &case, "0.5", &[120, 250], &["1"]);
+    run_full(&dir, &WATER);
+    run_stopped(&dir, &WATER, "0.5", &[120, 250], &["1"]);
     assert_same_outputs(&dir);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_physical_plate_is_extended_to_an_end_in_seconds() {
+    let dir = scratch("water-seconds");
+    let mut args: Vec<String> = WATER.iter().map(|s| s.to_string()).collect();
+    args.extend(outputs("cut"));
+    args.extend(["--checkpoint-every".into(), "1".into()]);
+    expect_code(&run(&dir, &strs(&args)), 0);
+    let s = summary(&dir, "cut.json");
+    let c_over_u = s["chord_m"].as_f64().unwrap() / s["velocity_scale_m_s"].as_f64().unwrap();
+    expect_code(
+        &run(&dir, &["resume", "cut.ckpt", "--t-end", "0.5s", "-q"]),
+        0,
+    );
+    let t = summary(&dir, "cut.json")["t_end"].as_f64().unwrap();
+    assert!(
+        (t * c_over_u - 0.5).abs() < 1e-12,
+        "0.5 s is {} c/U; the run went on to {t}",
+        0.5 / c_over_u
+    );
+    let out = run(&dir, &["resume", "cut.ckpt", "--t-end", "0.1s", "-q"]);
+    expect_one_line_error(&out, "--t-end 0.1s: the checkpoint is at t = ");
     let _ = std::fs::remove_dir_all(&dir);
 }
 

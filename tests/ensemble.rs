@@ -132,6 +132,17 @@ fn bad_ensembles_are_refused_in_one_line_before_anything_runs() {
             &["--members", "3", "--perturbation", "1e-3", "--t-end", "2"][..],
             "--t-end 2",
         ),
+        (
+            &[
+                "--members",
+                "3",
+                "--perturbation",
+                "1e-3",
+                "--t-end",
+                "0.01s",
+            ][..],
+            "--t-end 0.01s: the branch point is at t = ",
+        ),
     ] {
         let out = ensemble(&dir, "bad", extra);
         expect_one_line_error(&out, what);

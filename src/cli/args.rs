@@ -3,12 +3,13 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 
-use super::end_time::EndTime;
+use super::end_time;
 use super::flags::ArgError;
 use super::plate_args::{BodyArgs, CoupledBuilder};
 use super::record_args::RecordArgs;
 use super::shape_args::ShapeArgs;
 use super::span_arg::parse_span;
+use platefall_core::config::EndTime;
 use platefall_core::config::{defaults, RunBuilder};
 use platefall_core::flow::FarFieldScheme;
 use platefall_core::flow3d::Span;
@@ -285,7 +286,7 @@ impl SolverArgs {
             b = b.far_field(scheme);
         }
         if let Some(t) = self.t_end {
-            b = b.t_end(t.convective(scales)?);
+            b = b.t_end(end_time::convective(t, scales)?);
         }
         Ok(b)
     }

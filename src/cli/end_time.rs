@@ -1,66 +1,19 @@
-//! `--t-end` as a person gives it: convective times c/U ("60"), or seconds of physical time for a
-//! plate with physical units ("10.5s"), converted with its chord and velocity scale
-//! (docs/physics.md §2: t [s] = t [c/U] · c / U).
-use std::fmt;
-use std::str::FromStr;
-
+//! `--t-end` on the command line: an [`EndTime`] in c/U or in seconds, converted with the plate's
+//! scales, and refused by name when seconds are given for a plate without physical units.
+use platefall_core::config::EndTime;
 use platefall_core::sim::ReferenceScales;
 
 use super::flags::ArgError;
 
-/// An end time as given on the command line.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum EndTime {
-    /// In convective times c/U.
-    Convective(f64),
-    /// In seconds (a physical plate's).
-    Seconds(f64),
-}
-
-impl EndTime {
-    /// The end time in c/U: seconds need the plate's scales.
-    pub fn convective(self, scales: Option<ReferenceScales>) -> Result<f64, ArgError> {
-        match (self, scales) {
-            (EndTime::Convective(t), _) => Ok(t),
-            (EndTime::Seconds(s), Some(k)) => Ok(s * k.speed_m_s / k.chord_m),
-            (EndTime::Seconds(s), None) => Err(ArgError::Invalid {
-                flag: "--t-end",
-                value: format!("{s}s"),
-                accepted: "convective times c/U (e.g. 60); seconds need a plate with physical \
-                           units (--chord-mm … --fluid, or the card's preset)"
-                    .into(),
-            }),
-        }
-    }
-}
-
-impl FromStr for EndTime {
-    type Err = String;
-
-    fn from_str(text: &str) -> Result<EndTime, String> {
-        let text = text.trim();
-        let (number, seconds) = match text.strip_suffix('s') {
-            Some(n) => (n.trim_end(), true),
-            None => (text, false),
-        };
-        let value: f64 = number.parse().map_err(|_| {
-            format!("{text}: accepted a number of convective times c/U (60) or of seconds (10.5s)")
-        })?;
-        Ok(if seconds {
-            EndTime::Seconds(value)
-        } else {
-            EndTime::Convective(value)
-        })
-    }
-}
-
-impl fmt::Display for EndTime {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            EndTime::Convective(t) => write!(f, "{t}"),
-            EndTime::Seconds(s) => write!(f, "{s}s"),
-        }
-    }
+/// `--t-end`'s value in c/U: seconds need the plate's scales.
+pub fn convective(t: EndTime, scales: Option<ReferenceScales>) -> Result<f64, ArgError> {
+    t.convective(scales).ok_or_else(|| ArgError::Invalid {
+        flag: "--t-end",
+        value: t.to_string(),
+        accepted: "convective times c/U (e.g. 60); seconds need a plate with physical units \
+                   (--chord-mm … --fluid, or the card's preset)"
+            .into(),
+    })
 }
 
 #[cfg(test)]
@@ -68,20 +21,9 @@ mod tests {
     use super::*;
 
     #[test]
-    fn end_times_read_as_given_and_seconds_convert_with_the_plates_scales() {
-        assert_eq!("60".parse(), Ok(EndTime::Convective(60.0)));
-        assert_eq!("10.5s".parse(), Ok(EndTime::Seconds(10.5)));
-        assert_eq!(" 2 s".parse(), Ok(EndTime::Seconds(2.0)));
-        assert!("10m".parse::<EndTime>().is_err() && "s".parse::<EndTime>().is_err());
-        // A chord of 16 mm at U = 9.14 cm/s: c/U = 0.175 s, so 10.5 s is 60 c/U.
-        let k = ReferenceScales {
-            chord_m: 0.016,
-            speed_m_s: 0.016 / 0.175,
-        };
-        let t = EndTime::Seconds(10.5).convective(Some(k)).unwrap();
-        assert!((t - 60.0).abs() < 1e-12, "{t}");
-        assert_eq!(EndTime::Convective(60.0).convective(None).unwrap(), 60.0);
-        let e = EndTime::Seconds(1.0).convective(None).unwrap_err();
+    fn seconds_without_scales_are_refused_by_name() {
+        let e = convective(EndTime::Seconds(1.0), None).unwrap_err();
         assert!(e.to_string().contains("--t-end 1s"), "{e}");
+        assert_eq!(convective(EndTime::Convective(6.0), None).unwrap(), 6.0);
     }
 }

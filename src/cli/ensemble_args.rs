@@ -2,6 +2,7 @@
 use std::path::PathBuf;
 
 use clap::Args;
+use platefall_core::config::EndTime;
 
 use super::sweep_args::ProgressMode;
 use crate::exit::Exit;
@@ -40,9 +41,10 @@ pub struct EnsembleArgs {
     /// Each member's end in net turns after release [default: the spun-up run's].
     #[arg(long, value_name = "N")]
     pub turns: Option<f64>,
-    /// Each member's end time [default: the spun-up run's].
+    /// Each member's end time, in c/U (60) or, for a plate with physical units, in seconds
+    /// (10.5s) [default: the spun-up run's].
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
-    pub t_end: Option<f64>,
+    pub t_end: Option<EndTime>,
     /// Average each member from this complete turn after release [default: two turns after
     /// the branch].
     #[arg(long, value_name = "K")]

@@ -6,6 +6,7 @@ use clap::Args;
 
 use super::args::CheckpointArgs;
 use super::record_args::ProgressArg;
+use platefall_core::config::EndTime;
 
 /// `platefall resume`'s options (the checkpoint options are a case run's, with resume's defaults).
 #[derive(Args, Debug, Clone)]
@@ -16,9 +17,10 @@ use super::record_args::ProgressArg;
 pub struct ResumeArgs {
     /// The checkpoint file (written by --checkpoint-every or at a stop)
     pub file: PathBuf,
-    /// A new end time (later than the checkpoint's time) [default: the run's]
+    /// A new end time (later than the checkpoint's time), in c/U (60) or, for a plate with
+    /// physical units, in seconds (10.5s) [default: the run's]
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
-    pub t_end: Option<f64>,
+    pub t_end: Option<EndTime>,
     /// A new number of net turns after release [default: the run's]
     #[arg(long, value_name = "N")]
     pub turns: Option<f64>,

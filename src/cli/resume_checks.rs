@@ -5,7 +5,9 @@ use std::path::PathBuf;
 
 use super::command::Command;
 use super::config::run_config;
+use super::end_time;
 use super::resume_args::ResumeArgs;
+use platefall_core::config::Units;
 use platefall_core::sim::ValidatedConfig;
 use platefall_record::checkpoint::ResumeInfo;
 
@@ -30,7 +32,7 @@ pub enum ResumeRefusal {
     #[error("--csv-from {}: the run writes no CSV; give --csv FILE too", .0.display())]
     CsvFromWithoutCsv(PathBuf),
     /// The run would already be over under the end asked for.
-    #[error("{end}: the checkpoint is at t = {t:.4}; the run would already be over (give a later --t-end or more --turns)")]
+    #[error("{end}: the checkpoint is at t = {t:.4} c/U; the run would already be over (give a later --t-end or more --turns)")]
     AlreadyOver {
         /// The end, e.g. "--t-end 3" or "the run's end".
         end: String,
@@ -61,7 +63,11 @@ pub fn resumed_config(
         anyhow::bail!(ResumeRefusal::ConfigChanged(args.file.clone()));
     }
     let mut c = config.config().clone();
-    c.time.t_end = args.t_end.unwrap_or(resume.t_end);
+    let scales = Units::of(&c).map(|u| u.scales);
+    c.time.t_end = match args.t_end {
+        Some(t) => end_time::convective(t, scales)?,
+        None => resume.t_end,
+    };
     c.time.turns = args.turns.or(resume.turns);
     c.time.average_from_turn = args.average_from_turn.unwrap_or(c.time.average_from_turn);
     Ok(c.validate().map_err(super::flags::ArgError::from)?)

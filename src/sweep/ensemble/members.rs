@@ -14,6 +14,8 @@ use serde::{Deserialize, Serialize};
 use super::super::failure::Failure;
 use super::super::plan::CaseSpec;
 use super::super::values::Value;
+use platefall_core::config::{EndTime, Units};
+use platefall_core::sim::RunConfig;
 use platefall_post::rng::Rng;
 use platefall_record::checkpoint::{read_checkpoint, Checkpoint};
 
@@ -35,7 +37,7 @@ pub(crate) struct EnsembleSpec {
     /// Each member's end: net turns after release, and/or a time.
     pub(crate) turns: Option<f64>,
     /// See `turns`.
-    pub(crate) t_end: Option<f64>,
+    pub(crate) t_end: Option<EndTime>,
     /// Average from this complete turn after release (None: two whole turns after the branch).
     pub(crate) average_from_turn: Option<usize>,
     /// Members' checkpoint cadence (None: the spun-up run's).
@@ -137,10 +139,16 @@ pub(crate) fn branch_of(spec: &EnsembleSpec) -> Result<(Checkpoint, Branch), Fai
         )));
     };
     let (t, turns) = (sim.flow.t, (sim.state.theta - th).abs() / (2.0 * PI));
-    let t_end = spec.t_end.unwrap_or(ckpt.resume.t_end);
+    let t_end = match spec.t_end {
+        Some(given) => member_end(given, &ckpt)?,
+        None => ckpt.resume.t_end,
+    };
     if t_end <= t + 1e-9 {
+        let shown = spec
+            .t_end
+            .map_or(t_end.to_string(), |given| given.to_string());
         return Err(bad(format!(
-            "--t-end {t_end}: the branch point is at t = {t:.4}: accepted a later end"
+            "--t-end {shown}: the branch point is at t = {t:.4} c/U: accepted a later end"
         )));
     }
     if let Some(n) = spec.turns.or(ckpt.resume.turns).filter(|n| *n <= turns) {
@@ -176,6 +184,18 @@ pub(crate) fn branch_of(spec: &EnsembleSpec) -> Result<(Checkpoint, Branch), Fai
             average_from_turn,
         },
     ))
+}
+
+/// A member's end in c/U: seconds convert with the spun-up run's plate scales.
+fn member_end(given: EndTime, ckpt: &Checkpoint) -> Result<f64, Failure> {
+    let config: Option<RunConfig> = serde_json::from_str(&ckpt.resume.config_json).ok();
+    let scales = config.as_ref().and_then(Units::of).map(|u| u.scales);
+    given.convective(scales).ok_or_else(|| {
+        bad(format!(
+            "--t-end {given}: the spun-up run's plate has no physical units: accepted convective \
+             times c/U (e.g. 60)"
+        ))
+    })
 }
 
 /// The members' ids and perturbations.

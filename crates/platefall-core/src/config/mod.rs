@@ -5,6 +5,7 @@
 //! physically ([`Strip`]) in named fluids ([`Fluid`]), the plate of a coupled run ([`Plate`]),
 //! and the conversion of results back to physical units ([`Units`]).
 mod build;
+mod end_time;
 mod fluid;
 mod plate;
 mod preset;
@@ -13,6 +14,7 @@ mod strip3;
 mod units;
 
 pub use build::{defaults, ForcedRotation, FreeFall, PinnedPlate, RunBuilder, StaticPlate};
+pub use end_time::EndTime;
 pub use fluid::{Fluid, FLUID_NAMES};
 pub use plate::Plate;
 pub use preset::{NonDimensional, PhysicalPlate, FOOT_M};
