@@ -5,6 +5,7 @@
 #[path = "record_common/mod.rs"]
 mod record_common;
 
+use std::f64::consts::PI;
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -90,10 +91,7 @@ fn static_run_has_the_wake_at_the_cadence_and_plots_without_the_spike() {
     assert!(image_sizes(&d, "/world/wake/vorticity")
         .iter()
         .all(|s| *s == (64, 32)));
-    assert_eq!(
-        d.visual_bounds("Wake: Vorticity"),
-        Some(([-8.0, 2.0], [-2.5, 2.5]))
-    );
+    assert_eq!(d.visual_bounds("Wake: ω"), Some(([-8.0, 2.0], [-2.5, 2.5])));
     // The plate moves along +X: the window is not turned, and sits on the plate's centre.
     let quats = d.values::<RotationQuat>(
         "/world/wake",
@@ -131,16 +129,25 @@ fn static_run_has_the_wake_at_the_cadence_and_plots_without_the_spike() {
         dmax - dmin > 0.25 * (hi - lo),
         "developed [{dmin}, {dmax}] in [{lo}, {hi}]"
     );
-    let [mlo, mhi] = d.y_range("Motion").expect("a y range for the motion");
-    assert!(
-        mlo < 0.0 && 1.0 < mhi,
-        "V = 1, γ = θ̇ = 0, α = 0.4 in [{mlo}, {mhi}]"
-    );
+    let [mlo, mhi] = d.y_range("Rotation rate").expect("a y range for the rate");
+    assert!(mlo < 0.0 && 0.0 < mhi, "θ̇ = 0 in [{mlo}, {mhi}]");
+    // The angles (dots: they wrap at ±π) open on ±π and a margin.
+    let [alo, ahi] = d.y_range("Angles").expect("a y range for the angles");
+    assert!(alo < -PI && PI < ahi && ahi < 3.5, "[{alo}, {ahi}]");
+    // Each field image has its colour bar (and the line naming it) under each flow view's
+    // origin, and each flow view its caption.
+    for origin in ["/world/follow", "/world/wake/screen"] {
+        for field in ["vorticity", "pressure", "speed"] {
+            for part in ["", "/labels"] {
+                let path = format!("{origin}/legend/{field}{part}");
+                assert!(d.statics.contains(&path), "{path}");
+            }
+        }
+        assert!(d.statics.contains(&format!("{origin}/legend/caption")));
+    }
     // The α plots (mirrored screen frame: a value v is drawn at y = −v) open on the same values,
     // with a margin of 4 % of the range on each side.
-    let (_, y) = d
-        .visual_bounds("C_L, C_D, C_M vs α")
-        .expect("bounds of the α plot");
+    let (_, y) = d.visual_bounds("C vs α").expect("bounds of the α plot");
     let m = 0.04 * (hi - lo);
     assert!(
         (y[0] - (-hi - m)).abs() < 1e-9 && (y[1] - (-lo + m)).abs() < 1e-9,
@@ -167,7 +174,7 @@ fn free_fall_wake_window_turns_with_the_path() {
     let snaps = d.rows("/world/plate/vorticity");
     assert_wake_cadence(&d, snaps);
     assert_eq!(
-        d.visual_bounds("Wake: Speed"),
+        d.visual_bounds("Wake: speed"),
         Some(([-10.0, 2.0], [-3.0, 3.0]))
     );
     assert!(image_sizes(&d, "/world/wake/pressure")

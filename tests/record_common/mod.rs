@@ -82,6 +82,7 @@ pub fn run_info_until(grid: GridGeometry, t_end: Option<f64>) -> RunInfo {
         view: ViewDefaults {
             wake_window: default_wake_window(CaseKind::Free),
             plot_ranges: None,
+            time_unit_s: None,
         },
         t_end,
     }
@@ -337,7 +338,10 @@ impl Decoded {
         property: &str,
         id: rerun::ComponentIdentifier,
     ) -> Option<C> {
-        let (view, _) = self.views().into_iter().find(|(_, n)| n == name)?;
+        let (view, _) = self
+            .views()
+            .into_iter()
+            .find(|(_, n)| n.starts_with(name))?;
         let path = format!("{view}/{property}");
         values_where::<C>(&self.blueprint, |p| p == path, id)
             .into_iter()

@@ -10,9 +10,13 @@ use crate::stats::Interval;
 pub const TARGET: f64 = 0.02;
 
 /// The observations `info`'s mean needs for a half-width of [`TARGET`] of its value; None
-/// without an interval or a mean away from zero.
+/// without an interval, or when the interval holds zero (a relative width of a mean whose sign
+/// is not known asks for no length in particular).
 pub fn observations_for_target(info: &IntervalInfo) -> Option<f64> {
     let (hw, t, n_eff) = (info.half_width?, info.t?, info.n_eff?);
+    if covers_zero(info) {
+        return None;
+    }
     let interval = Interval {
         mean: info.value,
         half_width: hw,
@@ -26,9 +30,15 @@ pub fn observations_for_target(info: &IntervalInfo) -> Option<f64> {
     single_run_length(&interval, info.count as f64, TARGET * info.value.abs())
 }
 
+/// Whether `info`'s interval holds zero.
+fn covers_zero(info: &IntervalInfo) -> bool {
+    info.half_width.is_some_and(|hw| hw >= info.value.abs())
+}
+
 /// "for ±2 % (95 %) average over: θ̇ about 41, V within it now, γ about 13 whole turns (this run:
-/// 10), …", for a
-/// coupled run's θ̇, V and γ (from its summary's `ci`); None when none of them has an interval.
+/// 10), …", for a coupled run's θ̇, V and γ (from its summary's `ci`); a mean whose interval
+/// holds zero (a fluttering plate's θ̇) is named as such. None when none of them has an
+/// interval away from zero.
 pub fn planning_line(ci: &IntervalKeys) -> Option<String> {
     let mut parts = Vec::new();
     let mut unit: Option<(&str, usize)> = None;
@@ -40,6 +50,10 @@ pub fn planning_line(ci: &IntervalKeys) -> Option<String> {
         let Some(info) = ci.intervals.get(key) else {
             continue;
         };
+        if covers_zero(info) {
+            parts.push(format!("{name} zero within its interval"));
+            continue;
+        }
         let Some(needed) = observations_for_target(info) else {
             continue;
         };
@@ -111,5 +125,16 @@ mod tests {
         );
         assert!(!line.contains('γ'), "{line}");
         assert!(planning_line(&IntervalKeys::default()).is_none());
+        // A fluttering plate's θ̇ (−0.00009 ± 0.00044) asks for no relative width.
+        let flutter = info(-0.00009, 0.00044, 6, 6.0);
+        assert!(observations_for_target(&flutter).is_none());
+        ci.intervals.insert("mean_omega".into(), flutter);
+        let line = planning_line(&ci).unwrap();
+        assert!(
+            line.contains("θ̇ zero within its interval, V within it now"),
+            "{line}"
+        );
+        ci.intervals.remove("mean_speed");
+        assert!(planning_line(&ci).is_none(), "nothing to plan");
     }
 }

@@ -3,6 +3,7 @@
 use super::plot_range::PlotRanges;
 use super::resample::FieldWindow;
 use super::wake::default_wake_window;
+use platefall_core::config::Units;
 use platefall_core::sim::RunConfig;
 
 /// The viewer's defaults for one run.
@@ -12,6 +13,8 @@ pub struct ViewDefaults {
     pub wake_window: FieldWindow,
     /// The vertical ranges the plots open on; None: the viewer's automatic ranges.
     pub plot_ranges: Option<PlotRanges>,
+    /// The time unit c/U in seconds, for a plate with physical units (docs/physics.md §2).
+    pub time_unit_s: Option<f64>,
 }
 
 impl ViewDefaults {
@@ -20,6 +23,7 @@ impl ViewDefaults {
         ViewDefaults {
             wake_window: default_wake_window(config.case.kind()),
             plot_ranges: Some(PlotRanges::for_config(config)),
+            time_unit_s: Units::of(config).map(|u| u.time_s(1.0)),
         }
     }
 }

@@ -101,9 +101,15 @@
 //! /world/follow                   Transform3D with the poses: translation (X, Y), scale (1, −1):
 //!                                 a non-rotating frame on the plate, Y mirrored for the screen
 //! /world/follow/reach             LineStrips2D, faint circle swept by the image window (static)
+//! /world/follow/legend/FIELD      DepthImage colour bar of FIELD (vorticity, pressure, speed) in
+//!                                 the view's screen coordinates, and in .../labels its line of
+//!                                 text: name, unit, range (static; `viewer/legend.rs`)
+//! /world/follow/legend/caption    Points2D label: the close-up's caption (static)
+//! /world/wake/screen/legend/...   the same for the wake views
 //! /world/screen                   Transform3D scale (1, −1): the inertial frame for the screen
 //! /coefficients/{cl,cd,cm}        Scalars per step (SeriesLines: C_L, C_D, C_M)
-//! /motion/{speed,omega,gamma,alpha}  Scalars per step (V, dθ/dt, γ, α; radians)
+//! /motion/{speed,omega,gamma,alpha}  Scalars per step (V, dθ/dt, γ, α; radians; the angles
+//!                                 styled as SeriesPoints, the others as SeriesLines)
 //! /solver/dt                      Scalars per step
 //! /polar/coefficients/{cl,cd,cm}/NNNN  LineStrips2D of (2α, C) grown over time (x = 2α
 //!                                      widens the α axis; values clipped to ±10)

@@ -2,16 +2,19 @@
 //!
 //! ```text
 //! ┌─────────────────────────────────────────┬───────────────────────────┐
-//! │ Wake [Vorticity|Pressure|Speed]         │ Coefficients (C_L C_D C_M)│
-//! │  12 × 6 chords along the path, Y up     │                           │
-//! ├────────────────────┬────────────────────┼───────────────────────────┤
-//! │ Close-up [ω|p|speed]│ Trajectory: path,  │ Motion (V θ̇ γ α)          │
-//! │  + streamlines,    │  strobe and the    ├───────────────────────────┤
-//! │  following, Y up   │  vorticity in place│ [Config|Summary|Status|   │
-//! │                    │                    │  C vs α|V,θ̇ vs α|Solver]  │
+//! │ Wake [ω|p|speed]                        │ Coefficients C_L C_D C_M  │
+//! │  12 × 6 chords along the path           ├───────────────────────────┤
+//! │                                         │ Angles α, γ (dots)        │
+//! ├────────────────────┬────────────────────┼─────────────┬─────────────┤
+//! │ Close-up [ω|p|speed]│ Trajectory: path,  │ Rate dθ/dt  │ Speed V     │
+//! │  + streamlines,    │  strobe and the    ├─────────────┴─────────────┤
+//! │  following, Y up   │  vorticity in place│ [Configuration|Summary|   │
+//! │                    │                    │  Status|C vs α|…|Solver]  │
 //! └────────────────────┴────────────────────┴───────────────────────────┘
 //! ```
-//! Each flow tab shows one field image (the others are excluded from it). The plots open on the
+//! Each flow tab shows one field image (the others are excluded from it) with its colour bar and
+//! the view's caption (`legend.rs`); the plots are split by unit and named with it, the time
+//! axis's unit (c/U, shown by the viewer as seconds) in the coefficients' title. The plots open on the
 //! case's ranges ([`platefall_post::PlotRanges`]): the developed motion fills them, the start-up
 //! spike is outside (zoom out to see it). The wake and close-up views open on fixed bounds, so
 //! they do not zoom while the windows turn. The blueprint and selection panels start collapsed
@@ -23,7 +26,8 @@ use rerun::blueprint::{
 };
 use rerun::{RecordingStream, RecordingStreamResult};
 
-use super::layout::paths;
+use super::layout::{paths, ANGLES};
+use super::legend::{bar_path, caption_path};
 use super::polar::polar_axes;
 use super::view_properties::{send_with_properties, ViewProperties};
 use platefall_post::{FieldWindow, PlotRanges};
@@ -37,11 +41,29 @@ pub(crate) struct ViewFit {
     pub wake: FieldWindow,
     /// The plots' vertical ranges (None: automatic).
     pub plots: Option<PlotRanges>,
+    /// c/U in seconds, for a plate with physical units.
+    pub time_unit_s: Option<f64>,
 }
 
-/// A flow view of one `field` under `base` (the other fields excluded), with `extra` entities.
+impl ViewFit {
+    /// How the plots' time axis reads: the viewer shows the `time` timeline in seconds, and
+    /// each of its seconds is one c/U.
+    fn time_axis(&self) -> String {
+        match self.time_unit_s {
+            Some(s) => format!("time axis in c/U = {s:.3} s"),
+            None => "time axis in c/U".into(),
+        }
+    }
+}
+
+/// A flow view of one `field` under `base` (the other fields excluded) with its colour bar and
+/// the view's caption, and `extra` entities.
 fn flow_view(name: &str, origin: &str, base: &str, field: &str, extra: &[String]) -> ContainerLike {
-    let mut contents: Vec<String> = vec![format!("+ {base}/{field}")];
+    let mut contents: Vec<String> = vec![
+        format!("+ {base}/{field}"),
+        format!("+ {}/**", bar_path(origin, field)),
+        format!("+ {}", caption_path(origin)),
+    ];
     contents.extend(extra.iter().cloned());
     Spatial2DView::new(name)
         .with_origin(origin)
@@ -60,7 +82,7 @@ fn field_tabs(
 ) -> ContainerLike {
     let views: Vec<ContainerLike> = paths::FIELDS
         .iter()
-        .zip(["Vorticity", "Pressure", "Speed"])
+        .zip(["ω", "p", "speed"])
         .map(|(field, label)| {
             let view = flow_view(&format!("{title}: {label}"), origin, base, field, extra);
             props.bounds(&view, bounds.0, bounds.1);
@@ -102,25 +124,36 @@ fn flow_views(props: &mut ViewProperties, fit: &ViewFit) -> (ContainerLike, Cont
     (wake, closeup)
 }
 
-/// The plots against time and against α, fitted to the case's ranges.
-fn plots(props: &mut ViewProperties, fit: &ViewFit) -> [ContainerLike; 4] {
-    let coefficients: ContainerLike = TimeSeriesView::new("Coefficients")
-        .with_origin(paths::COEFFICIENTS)
-        .into();
-    let motion: ContainerLike = TimeSeriesView::new("Motion")
-        .with_origin(paths::MOTION)
-        .into();
+/// A time-series view of `series` named `name`.
+fn time_series(name: &str, series: &[&str]) -> ContainerLike {
+    TimeSeriesView::new(name)
+        .with_contents(series.iter().map(|s| format!("+ {s}")))
+        .into()
+}
+
+/// The plots against time (the coefficients; the motion by unit: angles, rate, speed) and
+/// against α, fitted to the case's ranges.
+fn plots(props: &mut ViewProperties, fit: &ViewFit) -> [ContainerLike; 6] {
+    let coefficients: ContainerLike =
+        TimeSeriesView::new(format!("Coefficients C_L, C_D, C_M ({})", fit.time_axis()))
+            .with_origin(paths::COEFFICIENTS)
+            .into();
+    let angles = time_series("Angles α, γ [rad]", &ANGLES);
+    let rate = time_series("Rotation rate dθ/dt [U/c]", &["/motion/omega"]);
+    let speed = time_series("Speed V [U]", &["/motion/speed"]);
+    let pi = std::f64::consts::PI;
+    props.y_range(&angles, [-pi - 0.3, pi + 0.3]);
     let polar = |name: &str, curves: &str| -> ContainerLike {
         Spatial2DView::new(name)
             .with_origin(paths::POLAR_SCREEN)
             .with_contents([format!("+ {curves}/**")])
             .into()
     };
-    let polar_coefficients = polar("C_L, C_D, C_M vs α", paths::POLAR_COEFFICIENTS);
+    let polar_coefficients = polar("C vs α", paths::POLAR_COEFFICIENTS);
     let polar_motion = polar("V, dθ/dt vs α", paths::POLAR_MOTION);
     if let Some(r) = fit.plots {
         props.y_range(&coefficients, r.coefficients);
-        props.y_range(&motion, r.motion);
+        props.y_range(&rate, r.motion);
         for (view, axes) in [&polar_coefficients, &polar_motion]
             .into_iter()
             .zip(polar_axes(Some(r)))
@@ -129,7 +162,14 @@ fn plots(props: &mut ViewProperties, fit: &ViewFit) -> [ContainerLike; 4] {
             props.bounds(view, x, y);
         }
     }
-    [coefficients, motion, polar_coefficients, polar_motion]
+    [
+        coefficients,
+        angles,
+        rate,
+        speed,
+        polar_coefficients,
+        polar_motion,
+    ]
 }
 
 /// The default blueprint (see the module docs) and the view properties it needs.
@@ -145,13 +185,14 @@ pub(crate) fn default_blueprint(fit: &ViewFit) -> (Blueprint, ViewProperties) {
             format!("+ {}/**", paths::STROBE),
             format!("+ {}", paths::OUTLINE),
         ]);
-    let [coefficients, motion, polar_coefficients, polar_motion] = plots(&mut props, fit);
+    let [coefficients, angles, rate, speed, polar_coefficients, polar_motion] =
+        plots(&mut props, fit);
     let solver = TimeSeriesView::new("Solver").with_contents([
         format!("+ {}/**", paths::SOLVER),
         format!("+ {}", paths::SKIPPED_FIELDS),
     ]);
     let info = Tabs::new([
-        ContainerLike::from(TextDocumentView::new("Run configuration").with_origin(paths::CONFIG)),
+        ContainerLike::from(TextDocumentView::new("Configuration").with_origin(paths::CONFIG)),
         TextDocumentView::new("Summary")
             .with_origin(paths::SUMMARY)
             .into(),
@@ -162,7 +203,9 @@ pub(crate) fn default_blueprint(fit: &ViewFit) -> (Blueprint, ViewProperties) {
     ]);
     let bottom = Horizontal::new([closeup, trajectory.into()]);
     let left = Vertical::new([wake, bottom.into()]).with_row_shares([1.1, 1.0]);
-    let right = Vertical::new([coefficients, motion, info.into()]).with_row_shares([1.0, 1.0, 1.1]);
+    let motion = Horizontal::new([rate, speed]);
+    let right = Vertical::new([coefficients, angles, motion.into(), info.into()])
+        .with_row_shares([1.0, 0.75, 0.75, 1.0]);
     let root = Horizontal::new([left.into(), right.into()]).with_column_shares([3.0, 2.0]);
     (with_panels(root), props)
 }

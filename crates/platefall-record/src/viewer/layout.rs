@@ -96,6 +96,9 @@ pub(super) const SERIES: [(&str, &str, u32); 9] = [
     (paths::SKIPPED_FIELDS, "skipped field snapshots", 0xE8574CFF),
 ];
 
+/// The angle series (drawn as dots: they wrap at ±π).
+pub(super) const ANGLES: [&str; 2] = ["/motion/gamma", "/motion/alpha"];
+
 /// The value of the per-step series `i` of [`SERIES`] (0 to 7) at step `s`.
 pub(super) fn series_value(i: usize, s: &StepSample) -> f64 {
     crate::recorded::RecordedStep::of(s).values[i.min(7)]

@@ -7,6 +7,7 @@ mod blueprint;
 mod curves;
 mod images;
 mod layout;
+mod legend;
 mod phase;
 mod polar;
 mod read;

@@ -65,6 +65,7 @@ impl Scene {
             closeup_reach: window_reach(&opts.field_window),
             wake: wake_window,
             plots: info.view.plot_ranges,
+            time_unit_s: info.view.time_unit_s,
         };
         send_default_blueprint(&rec, &fit)?;
         let section = SectionDrawing::new(&info.section);

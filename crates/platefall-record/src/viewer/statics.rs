@@ -3,10 +3,11 @@
 use rerun::components::{MagnificationFilter, Radius};
 use rerun::{
     Color, DepthImage, LineStrips2D, RecordingStream, RecordingStreamResult, SeriesLines,
-    TextDocument, Transform3D,
+    SeriesPoints, TextDocument, Transform3D,
 };
 
-use super::layout::{paths, FIELD_SCALES, SERIES};
+use super::layout::{paths, ANGLES, FIELD_SCALES, SERIES};
+use super::legend::{closeup_box, log_legends, wake_box};
 use super::polar::polar_axes;
 use super::section::SectionDrawing;
 use super::text::{config_markdown, document, invocation_json};
@@ -28,11 +29,31 @@ pub(super) fn log_static(
     log_field_styles(rec, paths::PLATE, img)?;
     log_field_styles(rec, paths::WAKE, wake)?;
     log_wake_window(rec, &wake.window)?;
+    log_legends(
+        rec,
+        paths::FOLLOW,
+        &closeup_box(window_reach(&opts.field_window)),
+        CLOSEUP_CAPTION,
+    )?;
+    log_legends(
+        rec,
+        paths::WAKE_SCREEN,
+        &wake_box(&wake.window),
+        WAKE_CAPTION,
+    )?;
     for (path, name, color) in SERIES {
-        let style = SeriesLines::new()
-            .with_names([name])
-            .with_colors([Color::from_u32(color)]);
-        rec.log_static(path, &style)?;
+        let color = Color::from_u32(color);
+        if ANGLES.contains(&path) {
+            // Dots: an angle's wrap at ±π would draw a vertical line across the plot.
+            let style = SeriesPoints::new()
+                .with_names([name])
+                .with_colors([color])
+                .with_marker_sizes([1.0]);
+            rec.log_static(path, &style)?;
+        } else {
+            let style = SeriesLines::new().with_names([name]).with_colors([color]);
+            rec.log_static(path, &style)?;
+        }
     }
     let [coefficients, motion] = polar_axes(info.view.plot_ranges);
     coefficients.log(rec, paths::POLAR_COEFFICIENTS)?;
@@ -47,6 +68,12 @@ pub(super) fn log_static(
         &document("# Summary\n\nThe run is in progress; the summary appears here when it ends."),
     )
 }
+
+/// The close-up's caption.
+const CLOSEUP_CAPTION: &str =
+    "following the plate, Y up; circle: the reach of the window turning with it";
+/// The wake view's caption.
+const WAKE_CAPTION: &str = "along the path: it runs to the right, the plate at the right";
 
 /// The 2D view draws +y downwards, so the views look through frames that mirror Y once.
 fn log_screen_frames(rec: &RecordingStream) -> RecordingStreamResult<()> {
