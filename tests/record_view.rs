@@ -138,7 +138,7 @@ fn static_run_has_the_wake_at_the_cadence_and_plots_without_the_spike() {
     // origin, and each flow view its caption.
     for origin in ["/world/follow", "/world/wake/screen"] {
         for field in ["vorticity", "pressure", "speed"] {
-            for part in ["", "/labels"] {
+            for part in ["/bar", "/text"] {
                 let path = format!("{origin}/legend/{field}{part}");
                 assert!(d.statics.contains(&path), "{path}");
             }

@@ -101,8 +101,8 @@
 //! /world/follow                   Transform3D with the poses: translation (X, Y), scale (1, −1):
 //!                                 a non-rotating frame on the plate, Y mirrored for the screen
 //! /world/follow/reach             LineStrips2D, faint circle swept by the image window (static)
-//! /world/follow/legend/FIELD      DepthImage colour bar of FIELD (vorticity, pressure, speed) in
-//!                                 the view's screen coordinates, and in .../labels its line of
+//! /world/follow/legend/FIELD/bar  DepthImage colour bar of FIELD (vorticity, pressure, speed) in
+//!                                 the view's screen coordinates, and in .../text its line of
 //!                                 text: name, unit, range (static; `viewer/legend.rs`)
 //! /world/follow/legend/caption    Points2D label: the close-up's caption (static)
 //! /world/wake/screen/legend/...   the same for the wake views

@@ -27,7 +27,7 @@ use rerun::blueprint::{
 use rerun::{RecordingStream, RecordingStreamResult};
 
 use super::layout::{paths, ANGLES};
-use super::legend::{bar_path, caption_path};
+use super::legend::{caption_path, legend_path};
 use super::polar::polar_axes;
 use super::view_properties::{send_with_properties, ViewProperties};
 use platefall_post::{FieldWindow, PlotRanges};
@@ -61,7 +61,7 @@ impl ViewFit {
 fn flow_view(name: &str, origin: &str, base: &str, field: &str, extra: &[String]) -> ContainerLike {
     let mut contents: Vec<String> = vec![
         format!("+ {base}/{field}"),
-        format!("+ {}/**", bar_path(origin, field)),
+        format!("+ {}/**", legend_path(origin, field)),
         format!("+ {}", caption_path(origin)),
     ];
     contents.extend(extra.iter().cloned());

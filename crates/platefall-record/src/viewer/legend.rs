@@ -65,8 +65,9 @@ pub(super) fn wake_box(w: &FieldWindow) -> ScreenBox {
     }
 }
 
-/// The entity of `field`'s colour bar under the view origin `origin`.
-pub(super) fn bar_path(origin: &str, field: &str) -> String {
+/// The entity of `field`'s legend under the view origin `origin`: the colour bar in `bar` (an
+/// image placed by its own transform) and its line of text beside it in `text`.
+pub(super) fn legend_path(origin: &str, field: &str) -> String {
     format!("{origin}/legend/{field}")
 }
 
@@ -94,7 +95,7 @@ pub(super) fn log_legends(
     let bar = view.bar();
     let steps = BAR_STEPS as f32;
     for (field, colormap, lo, hi) in FIELD_SCALES {
-        let path = bar_path(origin, field);
+        let path = format!("{}/bar", legend_path(origin, field));
         let values: Vec<u8> = (0..BAR_STEPS)
             .flat_map(|k| {
                 let v = lo + (hi - lo) * (k as f64 + 0.5) / steps as f64;
@@ -125,7 +126,8 @@ pub(super) fn log_legends(
             .with_meter(1.0)
             .with_draw_order(BAR_DRAW_ORDER),
         )?;
-        log_labels(rec, &format!("{path}/labels"), &bar, field, [lo, hi])?;
+        let text = format!("{}/text", legend_path(origin, field));
+        log_labels(rec, &text, &bar, field, [lo, hi])?;
     }
     rec.log_static(
         caption_path(origin),
