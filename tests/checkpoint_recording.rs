@@ -27,23 +27,7 @@ fn a_resumed_run_records_a_continuation_with_the_same_recording_id() {
 #[test]
 fn a_resumed_three_dimensional_run_records_a_continuation_with_the_same_recording_id() {
     let dir = scratch("recording3");
-    let case = [
-        "free",
-        "--span",
-        "1",
-        "--resolution",
-        "6",
-        "--extent",
-        "2",
-        "--develop",
-        "0.1",
-        "--t-end",
-        "0.3",
-        "--save",
-        "c.rrd",
-        "--progress",
-        "off",
-    ];
+    let case = [&FLIGHT[..], &["--t-end", "0.3", "--save", "c.rrd"]].concat();
     let stop = ["--checkpoint-every", "0.1", "--stop-after-steps", "12"];
     expect_code(&run(&dir, &[&case[..], &stop].concat()), 75);
     expect_code(&run(&dir, &["resume", "free.ckpt", "--progress", "off"]), 0);

@@ -9,7 +9,7 @@ use std::path::Path;
 
 mod checkpoint_common;
 mod cli_common;
-use checkpoint_common::{assert_same_outputs, run_full, run_stopped};
+use checkpoint_common::{assert_same_outputs, run_full, run_stopped, FLIGHT};
 use cli_common::{platefall, scratch};
 
 /// The CSV's header and its data rows (the trailer skipped).
@@ -175,21 +175,6 @@ fn a_periodic_flight_writes_its_csv_summary_and_recording() {
     assert_eq!(s["max_abs_span_y"], 0.0);
     assert!(s["cells_3d"].as_u64().unwrap() > 0 && s["mean_speed"].as_f64().unwrap() > 0.5);
 }
-
-/// The card's flight on a finite span at N = 6, held until t = 0.1.
-const FLIGHT: [&str; 11] = [
-    "free",
-    "--span",
-    "1",
-    "--resolution",
-    "6",
-    "--extent",
-    "2",
-    "--develop",
-    "0.1",
-    "--progress",
-    "off",
-];
 
 #[test]
 fn a_flight_stopped_with_checkpoints_and_resumed_writes_the_uninterrupted_runs_outputs() {

@@ -7,6 +7,22 @@ use std::process::{Command, Output};
 
 pub const PF: &str = env!("CARGO_BIN_EXE_platefall");
 
+/// A small 3-D flight: the card's section on a span of one chord at N = 6 in a box of 2 chords,
+/// released at t = 0.1 (its end and outputs are the test's).
+pub const FLIGHT: [&str; 11] = [
+    "free",
+    "--span",
+    "1",
+    "--resolution",
+    "6",
+    "--extent",
+    "2",
+    "--develop",
+    "0.1",
+    "--progress",
+    "off",
+];
+
 /// A fresh scratch directory for one test.
 pub fn scratch(name: &str) -> PathBuf {
     let d = std::env::temp_dir().join(format!("platefall-ckpt-{}-{name}", std::process::id()));
