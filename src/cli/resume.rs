@@ -102,8 +102,7 @@ fn resumed_outputs(
         (None, None) => None,
     };
     r.no_save = args.no_save || r.save.is_none();
-    r.quiet |= args.quiet;
-    r.progress = args.progress.unwrap_or(r.progress);
+    args.apply_progress(&mut r);
     let summary = args.summary.clone().or(run_own(&info.summary));
     let ckpt_path = args.checkpoint_out();
     let others: Vec<(&'static str, &Path)> = summary

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::args::CheckpointArgs;
-use super::record_args::ProgressArg;
+use super::record_args::{ProgressArg, RecordArgs};
 use platefall_core::config::EndTime;
 
 /// `platefall resume`'s options (the checkpoint options are a case run's, with resume's defaults).
@@ -67,5 +67,14 @@ impl ResumeArgs {
     pub(super) fn checkpoint_out(&self) -> PathBuf {
         let given = self.checkpoint.checkpoint.as_ref();
         given.unwrap_or(&self.file).clone()
+    }
+
+    /// The run's recording options `r` with resume's progress choices: `--progress MODE`
+    /// replaces the run's (and its `-q`), `-q` turns progress off (2-D and 3-D resumes alike).
+    pub(super) fn apply_progress(&self, r: &mut RecordArgs) {
+        if let Some(p) = self.progress {
+            (r.progress, r.quiet) = (p, false);
+        }
+        r.quiet |= self.quiet;
     }
 }

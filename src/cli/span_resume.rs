@@ -72,11 +72,11 @@ pub(super) fn resume_span(
     }
     let mut out = Outputs::resume(csv_pair, cmd, cells, &state)?;
     out.recording = continuation(args, cmd, &info, (&run, cells), state.steps())?;
-    let mode = match (args.quiet, args.progress, cmd.case_args()) {
-        (false, Some(p), _) => p.into(),
-        (false, None, Some((_, record))) => record.progress_mode(),
-        _ => ProgressMode::Off,
-    };
+    let mode = cmd.case_args().map_or(ProgressMode::Off, |(_, record)| {
+        let mut r = record.clone();
+        args.apply_progress(&mut r);
+        r.progress_mode()
+    });
     out.progress = Some(Progress::new(mode, config.time.t_end));
     let abs = |p: &Option<PathBuf>| p.as_deref().map(std::path::absolute).transpose();
     (info.csv, info.summary) = (abs(&csv)?, abs(&summary)?);
