@@ -207,27 +207,33 @@ impl Level {
 
     /// One Gauss–Seidel half-sweep over the cells of `colour`, out of place: `out` = `x` with the
     /// cells of that colour relaxed (they depend only on cells of the other colours). Cells with
-    /// a zero diagonal (decoupled) keep their value.
+    /// a zero diagonal (decoupled) keep their value. Only the relaxed cells' neighbour sums are
+    /// formed, each in the order of [`Level::neighbour_sum`].
     pub fn relax(&self, b: &[f64], x: &[f64], out: &mut [f64], colour: usize) {
         let [nx, ny, _] = self.n;
         self.planes(out, |k, plane| {
             for j in 0..ny {
                 let row = &mut plane[nx * j..][..nx];
-                self.neighbour_sum(x, j, k, row);
                 let at = nx * (j + ny * k);
                 let (d, xr, br) = (&self.diag[at..][..nx], &x[at..][..nx], &b[at..][..nx]);
-                let first = (0..nx.min(2)).find(|&i| self.colour(i, j, k) == colour);
-                // Cells of this colour: every other one from `first`; the rest keep x.
-                let mut next = first.unwrap_or(nx);
-                for i in 0..nx {
-                    if i == next {
-                        next += 2;
-                        if d[i] > 0.0 {
-                            row[i] = (br[i] + row[i]) / d[i];
-                            continue;
-                        }
+                row.copy_from_slice(xr);
+                let Some(first) = (0..nx.min(2)).find(|&i| self.colour(i, j, k) == colour) else {
+                    continue;
+                };
+                let cr = &self.cx[(nx + 1) * (j + ny * k)..][..nx + 1];
+                let (nb, m) = self.neighbours(j, k);
+                for i in (first..nx).step_by(2) {
+                    if d[i] <= 0.0 {
+                        continue;
                     }
-                    row[i] = xr[i];
+                    let mut sum = if i > 0 { cr[i] * xr[i - 1] } else { 0.0 };
+                    if i + 1 < nx {
+                        sum += cr[i + 1] * xr[i + 1];
+                    }
+                    for &(start, c) in &nb[..m] {
+                        sum += c[i] * x[start + i];
+                    }
+                    row[i] = (br[i] + sum) / d[i];
                 }
             }
         });
