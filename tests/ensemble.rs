@@ -2,8 +2,10 @@
 //! three members of two more turns): the members branch from the spun-up state with their own
 //! perturbations, their means are pooled into `ensemble.json`, the same command goes on with
 //! only the missing members (reproducibly: a member run again is byte for byte the same), and
-//! bad requests are refused with one line and exit code 2 before anything runs.
+//! bad requests are refused with one line and exit code 2 before anything runs; `ensemble.rrd`
+//! overlays every member.
 mod checkpoint_common;
+mod record_common;
 
 use std::path::Path;
 
@@ -44,6 +46,31 @@ fn ensemble(dir: &Path, out: &str, extra: &[&str]) -> std::process::Output {
 /// The pooled JSON.
 fn pooled(dir: &Path) -> serde_json::Value {
     serde_json::from_slice(&read(dir, "ens/ensemble.json")).unwrap()
+}
+
+/// The ensemble's recording holds every member's path, portrait and θ̇ series (with the
+/// viewer built; without it there is no recording).
+fn assert_overlaid(rrd: &Path, ids: &[&str]) {
+    if !cfg!(feature = "viewer") {
+        assert!(!rrd.exists());
+        return;
+    }
+    let d = record_common::decode(rrd);
+    assert!(
+        d.has_footer && d.has_blueprint,
+        "a complete file with its layout"
+    );
+    for id in ids {
+        for path in [
+            format!("/paths/members/{id}"),
+            format!("/portraits/members/{id}"),
+        ] {
+            assert!(d.statics.contains(&path), "{path}: {:?}", d.statics);
+        }
+        let rows = d.rows.get(&format!("/omega/{id}")).copied().unwrap_or(0);
+        assert!(rows > 100, "{id}: {rows} rows of θ̇");
+    }
+    assert!(d.statics.contains(&"/table".to_string()));
 }
 
 #[test]
@@ -90,6 +117,7 @@ fn members_branch_are_pooled_and_resume() {
     let m0 = read(&dir, "ens/cases/m000/run.csv");
     assert_eq!(body(&m0)[..spin_rows.len()], spin_rows[..]);
     assert!(body(&m0).len() > spin_rows.len() + 100);
+    assert_overlaid(&dir.join("ens/ensemble.rrd"), &["m000", "m001", "m002"]);
     // The same command again runs nothing; with one member gone (as if it never ran), it runs
     // that one alone, byte for byte as before (its perturbation comes from the seed).
     let summaries = read(&dir, "ens/cases/m002/summary.json");

@@ -22,6 +22,7 @@ pub mod independence;
 pub mod plan;
 pub mod pool;
 pub mod separation;
+pub mod trace;
 
 pub use independence::{decorrelation, Decorrelation};
 pub use plan::{members_for, single_run_length, MemberPlan};
@@ -30,6 +31,7 @@ pub use pool::{
     OwnInterval, Verdict, MIN_MEMBERS,
 };
 pub use separation::{separation, Separation};
+pub use trace::MemberTrace;
 
 #[cfg(test)]
 mod tests;

@@ -128,6 +128,16 @@ pub fn check_proxy_url(_url: &str) -> Result<(), ViewerRefusal> {
     Err(ViewerRefusal("this build has no viewer".into()))
 }
 
+/// An ensemble's members overlaid in a recording: nothing is written in this build (`None`).
+pub fn write_ensemble_recording(
+    _path: &Path,
+    _title: &str,
+    _traces: &[platefall_post::ensemble::MemberTrace],
+    _table: &str,
+) -> Result<Option<(PathBuf, u64)>, OutputError> {
+    Ok(None)
+}
+
 /// A sweep's phase diagram as a recording: nothing is written in this build (`None`).
 pub fn write_phase_recording(
     _path: &Path,

@@ -6,17 +6,19 @@
 //! independence verdict; and when the members' θ̇ parted, measured from their separation.
 //!
 //! The directory is a sweep's (`cases/<id>/summary.json`, `run.csv`, `results.csv`, the
-//! members' regimes along their perturbation in `phase.png`) plus `ensemble.json` and
-//! `ensemble.md`. Members whose summaries are complete are not run again: the same command
+//! members' regimes along their perturbation in `phase.png`) plus `ensemble.json`,
+//! `ensemble.md` and `ensemble.rrd` (every member overlaid, for the viewer). Members whose summaries are complete are not run again: the same command
 //! goes on with only the missing ones.
 //!
 //! Files, each using only those after it: `run` (the command), `pooled` (the members'
-//! summaries pooled, and the table), `parting` (their decorrelation from their CSVs),
-//! `members` (the request checked against the checkpoint, and each member's command line).
+//! summaries pooled, and the table), `parting` (their decorrelation from their CSVs), `traces`
+//! (the CSVs' columns read back), `members` (the request checked against the checkpoint, and
+//! each member's command line).
 mod members;
 mod parting;
 mod pooled;
 mod run;
+mod traces;
 
 pub(crate) use members::EnsembleSpec;
 pub(crate) use run::main;

@@ -5,8 +5,8 @@ use std::path::Path;
 
 use serde::Serialize;
 
+use super::traces::columns;
 use platefall_post::ensemble::decorrelation;
-use platefall_record::CSV_HEADER;
 
 /// Common times from the branch on at which the members are compared.
 pub(crate) const COMMON_TIMES: usize = 800;
@@ -31,27 +31,8 @@ pub(crate) struct Parting {
 
 /// (time, θ̇) of the rows of a member's CSV from `t0` on.
 fn series(csv: &Path, t0: f64) -> Option<(Vec<f64>, Vec<f64>)> {
-    let text = std::fs::read_to_string(csv).ok()?;
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next()?.split(',').collect();
-    if header != CSV_HEADER.split(',').collect::<Vec<_>>() {
-        return None;
-    }
-    let (ti, wi) = (0, header.iter().position(|h| *h == "thetadot")?);
-    let (mut t, mut w) = (Vec::new(), Vec::new());
-    for line in lines.filter(|l| !l.starts_with('#')) {
-        let f: Vec<&str> = line.split(',').collect();
-        let (Some(a), Some(b)) = (f.get(ti), f.get(wi)) else {
-            continue;
-        };
-        if let (Ok(a), Ok(b)) = (a.parse::<f64>(), b.parse::<f64>()) {
-            if a >= t0 {
-                t.push(a);
-                w.push(b);
-            }
-        }
-    }
-    Some((t, w))
+    let (t, mut c) = columns(csv, t0, &["thetadot"])?;
+    Some((t, c.pop()?))
 }
 
 /// The value of the piecewise-linear series (t, x) at `s` inside its span, `k` a hint that

@@ -9,6 +9,7 @@ use serde_json::Value as Json;
 use super::members::{branch_of, case_of, members, Branch, EnsembleSpec, Member};
 use super::parting::{parting, Parting};
 use super::pooled::{pool_keys, table, Quantity};
+use super::traces::trace;
 use crate::exit::Exit;
 use crate::sweep::commands::local;
 use crate::sweep::failure::{write_output, Failure};
@@ -17,6 +18,7 @@ use crate::sweep::plan::{Axis, CaseSpec, Plan, MADE_BY};
 use crate::sweep::progress::ProgressMode;
 use crate::sweep::values::{Scale, Value};
 use platefall_core::sim::CaseKind;
+use platefall_record::viewer::write_ensemble_recording;
 
 /// What `DIR/ensemble.json` holds.
 #[derive(Serialize)]
@@ -135,10 +137,18 @@ fn write_pooled(
     let md = markdown(&pooled);
     write_output(&layout.output("ensemble.json"), (json + "\n").as_bytes())?;
     write_output(&layout.output("ensemble.md"), md.as_bytes())?;
+    let traces: Vec<_> = done
+        .iter()
+        .filter_map(|(c, _)| trace(&c.id, &layout.csv(&c.id), branch.t))
+        .collect();
+    let title = format!("ensemble of {} members", traces.len());
+    let rrd = write_ensemble_recording(&layout.output("ensemble.rrd"), &title, &traces, &md)
+        .map_err(|e| Failure::output(e.to_string()))?;
     println!("{md}");
     println!(
-        "ensemble: {}/ensemble.md, ensemble.json",
-        layout.dir.display()
+        "ensemble: {}/ensemble.md, ensemble.json{}",
+        layout.dir.display(),
+        if rrd.is_some() { ", ensemble.rrd" } else { "" }
     );
     Ok(
         if pooled.completed.len() == members.len() && members.len() >= 2 {

@@ -8,6 +8,7 @@ mod curves;
 mod images;
 mod layout;
 mod legend;
+mod members;
 mod phase;
 mod polar;
 mod read;
@@ -31,6 +32,7 @@ use super::messages::{ConnectReport, RecordingError, RunInfo, RunOutcome, Viewer
 use super::options::RecordOptions;
 use super::output::OutputError;
 pub use layout::{paths, APPLICATION_ID};
+pub use members::write_ensemble_recording;
 pub use phase::write_phase_recording;
 use platefall_core::sim::{FieldSnapshot, StepSample};
 pub use read::read_recording;
