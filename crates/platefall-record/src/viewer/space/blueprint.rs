@@ -4,11 +4,15 @@
 //! ┌──────────────────────────────────────┬────────────────────────────────┐
 //! │ Flight: the plate, its path and      │ Coefficients (C_L … C_pitch)   │
 //! │ strobe, Q iso-surface, slices, Y up  ├────────────────────────────────┤
-//! │                                      │ Motion (angles, rates, speed)  │
-//! │                                      ├────────────────────────────────┤
-//! │                                      │ [Config|Summary|Status|Solver] │
+//! │                                      │ Angles roll, yaw, pitch [rad]  │
+//! │                                      ├───────────────┬────────────────┤
+//! │                                      │ Rates ω [U/c] │ Speed V [U]    │
+//! │                                      ├───────────────┴────────────────┤
+//! │                                      │ [Configuration|Summary|…]      │
 //! └──────────────────────────────────────┴────────────────────────────────┘
 //! ```
+//! Each plot is named with its unit; the coefficients' title says the time axis is in c/U (the
+//! viewer writes it as seconds).
 use rerun::blueprint::{
     Blueprint, ContainerLike, Horizontal, Spatial3DView, Tabs, TextDocumentView, TextLogView,
     TimeSeriesView, Vertical,
@@ -24,26 +28,45 @@ fn layout() -> Blueprint {
     let flight = Spatial3DView::new("Flight")
         .with_origin(paths3::WORLD)
         .with_contents(["+ /world/**"]);
-    let series = |name: &str, base: &str| -> ContainerLike {
+    let series = |name: &str, base: &str, names: &[&str]| -> ContainerLike {
         TimeSeriesView::new(name)
-            .with_contents([format!("+ {base}/**")])
+            .with_contents(names.iter().map(|n| format!("+ {base}/{n}")))
             .into()
     };
     let info = Tabs::new([
-        ContainerLike::from(TextDocumentView::new("Run configuration").with_origin(paths3::CONFIG)),
+        ContainerLike::from(TextDocumentView::new("Configuration").with_origin(paths3::CONFIG)),
         TextDocumentView::new("Summary")
             .with_origin(paths3::SUMMARY)
             .into(),
         TextLogView::new("Status")
             .with_origin(paths3::STATUS)
             .into(),
-        series("Solver", paths3::SOLVER),
+        series("Solver", paths3::SOLVER, &["**"]),
+    ]);
+    let m = paths3::MOTION;
+    let rates_and_speed = Horizontal::new([
+        series(
+            "Rates ω_x, ω_y, ω_z [U/c]",
+            m,
+            &["omega_x", "omega_y", "omega_z"],
+        ),
+        series("Speed V [U]", m, &["speed"]),
     ]);
     let right = Vertical::new([
-        series("Coefficients", paths3::COEFFICIENTS),
-        series("Motion", paths3::MOTION),
+        series(
+            "Coefficients C_L … C_pitch (time axis in c/U)",
+            paths3::COEFFICIENTS,
+            &["**"],
+        ),
+        series(
+            "Angles roll, yaw, pitch [rad]",
+            m,
+            &["roll", "yaw", "pitch"],
+        ),
+        rates_and_speed.into(),
         info.into(),
-    ]);
+    ])
+    .with_row_shares([1.0, 0.75, 0.75, 1.0]);
     with_panels(
         Horizontal::new([ContainerLike::from(flight), right.into()]).with_column_shares([3.0, 2.0]),
     )
