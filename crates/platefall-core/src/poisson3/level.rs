@@ -220,23 +220,57 @@ impl Level {
                 let Some(first) = (0..nx.min(2)).find(|&i| self.colour(i, j, k) == colour) else {
                     continue;
                 };
-                let cr = &self.cx[(nx + 1) * (j + ny * k)..][..nx + 1];
+                let cells = RowCells {
+                    cx: &self.cx[(nx + 1) * (j + ny * k)..][..nx + 1],
+                    x: xr,
+                    b: br,
+                    diag: d,
+                    first,
+                };
                 let (nb, m) = self.neighbours(j, k);
-                for i in (first..nx).step_by(2) {
-                    if d[i] <= 0.0 {
-                        continue;
-                    }
-                    let mut sum = if i > 0 { cr[i] * xr[i - 1] } else { 0.0 };
-                    if i + 1 < nx {
-                        sum += cr[i + 1] * xr[i + 1];
-                    }
-                    for &(start, c) in &nb[..m] {
-                        sum += c[i] * x[start + i];
-                    }
-                    row[i] = (br[i] + sum) / d[i];
+                let transverse = |q: usize| (&x[nb[q].0..][..nx], &nb[q].1[..nx]);
+                match m {
+                    4 => relax_row::<4>(std::array::from_fn(transverse), &cells, row),
+                    3 => relax_row::<3>(std::array::from_fn(transverse), &cells, row),
+                    2 => relax_row::<2>(std::array::from_fn(transverse), &cells, row),
+                    1 => relax_row::<1>(std::array::from_fn(transverse), &cells, row),
+                    _ => relax_row::<0>([], &cells, row),
                 }
             }
         });
+    }
+}
+
+/// One row of a Gauss–Seidel half-sweep: its x-face coefficients, x and b, the diagonal, and
+/// the first cell of the relaxed colour.
+struct RowCells<'a> {
+    cx: &'a [f64],
+    x: &'a [f64],
+    b: &'a [f64],
+    diag: &'a [f64],
+    first: usize,
+}
+
+/// Relaxes the cells `first`, `first` + 2, … of a row into `row`, with its `M` transverse
+/// neighbour rows (x, coefficients), the sum in the order of [`Level::neighbour_sum`]: the x
+/// faces, then the neighbours in turn. M is a constant so that the loop over them unrolls.
+fn relax_row<const M: usize>(nb: [(&[f64], &[f64]); M], r: &RowCells, row: &mut [f64]) {
+    let nx = row.len();
+    let (cr, xr) = (&r.cx[..nx + 1], &r.x[..nx]);
+    let (br, d) = (&r.b[..nx], &r.diag[..nx]);
+    let nb = nb.map(|(xn, c)| (&xn[..nx], &c[..nx]));
+    for i in (r.first..nx).step_by(2) {
+        if d[i] <= 0.0 {
+            continue;
+        }
+        let mut sum = if i > 0 { cr[i] * xr[i - 1] } else { 0.0 };
+        if i + 1 < nx {
+            sum += cr[i + 1] * xr[i + 1];
+        }
+        for (xn, c) in &nb {
+            sum += c[i] * xn[i];
+        }
+        row[i] = (br[i] + sum) / d[i];
     }
 }
 
