@@ -27,7 +27,7 @@ use rerun::blueprint::{
 use rerun::{RecordingStream, RecordingStreamResult};
 
 use super::layout::{paths, ANGLES};
-use super::legend::{caption_path, legend_path};
+use super::legend::{caption_path, closeup_box, legend_path, wake_box};
 use super::polar::polar_axes;
 use super::view_properties::{send_with_properties, ViewProperties};
 use platefall_post::{FieldWindow, PlotRanges};
@@ -94,7 +94,8 @@ fn field_tabs(
 
 /// The wake along the path and the close-up with streamlines.
 fn flow_views(props: &mut ViewProperties, fit: &ViewFit) -> (ContainerLike, ContainerLike) {
-    let w = fit.wake;
+    // The views open on the regions the legends are placed in (legend.rs).
+    let (w, c) = (wake_box(&fit.wake), closeup_box(fit.closeup_reach));
     let wake = field_tabs(
         props,
         "Wake",
@@ -104,10 +105,8 @@ fn flow_views(props: &mut ViewProperties, fit: &ViewFit) -> (ContainerLike, Cont
             format!("+ {}", paths::WAKE_PLATE),
             format!("+ {}/**", paths::TRAJECTORY),
         ],
-        // The view looks through the mirrored path frame: y on screen is −y.
-        ([w.x0, w.x1], [-w.y1, -w.y0]),
+        (w.x, w.y),
     );
-    let r = fit.closeup_reach;
     let closeup_extra = [
         format!("+ {}", paths::OUTLINE),
         format!("+ {}", paths::STREAMLINES),
@@ -119,7 +118,7 @@ fn flow_views(props: &mut ViewProperties, fit: &ViewFit) -> (ContainerLike, Cont
         paths::FOLLOW,
         paths::PLATE,
         &closeup_extra,
-        ([-r, r], [-r, r]),
+        (c.x, c.y),
     );
     (wake, closeup)
 }
