@@ -133,10 +133,74 @@ fn members_branch_are_pooled_and_resume() {
     assert!(read(&dir, "ens/cases/m001/run.csv") == m1);
     assert!(read(&dir, "ens/cases/m002/summary.json") == summaries);
     assert_eq!(pooled(&dir)["quantities"]["mean_omega"], *w);
-    // `platefall sweep collect` and `run-case` read a plan: they send the user back here.
+    // `platefall sweep collect` reads a plan: it sends the user back here.
     let out = run(&dir, &["sweep", "collect", "ens"]);
     expect_one_line_error(&out, "was made by `platefall ensemble`");
+    as_slurm_array(&dir, &three);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The members of `ens` (made with `members`) as a Slurm job array in `slm`, without Slurm:
+/// `--slurm` writes the script and runs nothing; each task's command (`sweep run-case DIR
+/// INDEX`) runs that member byte for byte as the local ensemble did; the script then holds only
+/// the members not done, and once all are done the same command pools them as the local one.
+fn as_slurm_array(dir: &Path, members: &[&str]) {
+    let slurm = |extra: &[&str]| {
+        let mut args = vec!["ensemble", "--from", "spin.ckpt", "--output", "slm"];
+        args.extend([
+            "--turns",
+            "3",
+            "--average-from-turn",
+            "2",
+            "--progress",
+            "off",
+        ]);
+        args.extend(members);
+        args.extend(["--slurm", "--time", "00:10:00"]);
+        args.extend(extra);
+        run(dir, &args)
+    };
+    let out = slurm(&[]);
+    expect_code(&out, 0);
+    let script = String::from_utf8(read(dir, "slm/sweep.sbatch")).unwrap();
+    let slm = std::path::absolute(dir.join("slm")).unwrap();
+    assert!(script.contains("#SBATCH --array=0-2\n"), "{script}");
+    assert!(script.contains("#SBATCH --time=00:10:00\n"), "{script}");
+    let task = format!("sweep run-case {} \"$SLURM_ARRAY_TASK_ID\"", slm.display());
+    assert!(script.contains(&task), "{script}");
+    assert!(
+        !dir.join("slm/cases/m000/summary.json").exists(),
+        "nothing ran"
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("sbatch ")
+            && stdout.contains("run this `platefall ensemble` command again"),
+        "{stdout}"
+    );
+    // A task's command, as the array runs it.
+    expect_code(&run(dir, &["sweep", "run-case", "slm", "1"]), 0);
+    let member = |d: &str, id: &str| read(dir, &format!("{d}/cases/{id}/run.csv"));
+    assert!(
+        member("slm", "m001") == member("ens", "m001"),
+        "m001 as a task differs"
+    );
+    expect_code(&slurm(&[]), 0);
+    let script = String::from_utf8(read(dir, "slm/sweep.sbatch")).unwrap();
+    assert!(script.contains("#SBATCH --array=0,2\n"), "{script}");
+    for k in ["0", "2"] {
+        expect_code(&run(dir, &["sweep", "run-case", "slm", k]), 0);
+    }
+    expect_code(&slurm(&[]), 0);
+    let pooled_in = |d: &str| -> serde_json::Value {
+        serde_json::from_slice(&read(dir, &format!("{d}/ensemble.json"))).unwrap()
+    };
+    assert_eq!(
+        pooled_in("slm")["quantities"],
+        pooled_in("ens")["quantities"]
+    );
+    let out = run(dir, &["sweep", "run-case", "slm", "3"]);
+    expect_one_line_error(&out, "case index 3 is out of range: accepted 0..=2");
 }
 
 #[test]

@@ -13,8 +13,8 @@ use record_common::{decode, run_platefall, temp_dir, Decoded};
 use rerun::components::{ImageFormat, RotationQuat, Translation3D};
 
 /// Runs the binary with `args` plus `--save DIR/NAME.rrd`; returns the decoded recording and the
-/// time and value columns of the coefficients (t, C_L, C_D, C_M) from `--csv`.
-fn record(name: &str, args: &[&str]) -> (Decoded, Vec<[f64; 4]>) {
+/// time, the coefficients and the centre (t, C_L, C_D, C_M, X, Y) from `--csv`.
+fn record(name: &str, args: &[&str]) -> (Decoded, Vec<[f64; 6]>) {
     let dir = temp_dir(&format!("view-{name}"));
     let rrd = dir.join(format!("{name}.rrd"));
     let csv = dir.join(format!("{name}.csv"));
@@ -33,7 +33,7 @@ fn record(name: &str, args: &[&str]) -> (Decoded, Vec<[f64; 4]>) {
         .filter(|l| !l.starts_with('#'))
         .map(|l| {
             let v: Vec<f64> = l.split(',').map(|x| x.parse().unwrap()).collect();
-            [v[0], v[3], v[4], v[5]]
+            [v[0], v[3], v[4], v[5], v[6], v[7]]
         })
         .collect();
     (decode(&rrd), rows)
@@ -197,6 +197,19 @@ fn free_fall_wake_window_turns_with_the_path() {
     let [lo, hi] = d.y_range("Coefficients").unwrap();
     assert_eq!(lo, -hi);
     assert!(rows[0][1].abs() > hi, "start C_L {} vs {hi}", rows[0][1]);
+    // The layout sent at the end opens the trajectory view on the whole path (screen frame:
+    // inertial Y mirrored), with at least the strobe's half chord around it.
+    let (x, y) = d
+        .visual_bounds("Trajectory")
+        .expect("bounds of the trajectory");
+    for r in &rows {
+        let (px, py) = (r[4], -r[5]);
+        assert!(
+            x[0] + 0.5 <= px && px <= x[1] - 0.5 && y[0] + 0.5 <= py && py <= y[1] - 0.5,
+            "centre ({px}, {py}) at t = {} outside {x:?} × {y:?}",
+            r[0]
+        );
+    }
 }
 
 #[test]

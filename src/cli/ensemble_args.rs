@@ -4,7 +4,7 @@ use std::path::PathBuf;
 use clap::Args;
 use platefall_core::config::EndTime;
 
-use super::sweep_args::ProgressMode;
+use super::sweep_args::{ProgressMode, SlurmFlags};
 use crate::exit::Exit;
 use crate::sweep::ensemble::{self, EnsembleSpec};
 
@@ -16,7 +16,12 @@ Example (the card at N = 64: spun up to turn 11, then 8 members of 20 more turns
 
 The members run as a sweep in DIR (DIR/cases/<id>/summary.json, run.csv, results.csv): a member \
 whose summary is complete is not run again, so the same command resumes a stopped ensemble. The \
-pooled statistics are DIR/ensemble.md and DIR/ensemble.json.";
+pooled statistics are DIR/ensemble.md and DIR/ensemble.json.
+
+On a Slurm cluster, add --slurm (and the resources of each task): it writes DIR/sweep.sbatch, one \
+array task per member not yet done, each `platefall sweep run-case DIR INDEX`; submit it with \
+sbatch, and once the array has finished run the same command again: it pools the members (and \
+writes a script for any that did not finish).";
 
 /// Run M members branched from a spun-up run's checkpoint, each with its own seeded
 /// perturbation of θ̇, and pool their means into ensemble means with 95 % intervals, the
@@ -56,7 +61,7 @@ pub struct EnsembleArgs {
     #[arg(long, value_name = "N", default_value_t = 1)]
     pub threads: usize,
     /// Members run at once [default: one per core].
-    #[arg(long, short = 'j', value_name = "N")]
+    #[arg(long, short = 'j', value_name = "N", conflicts_with = "slurm")]
     pub jobs: Option<usize>,
     /// The ensemble's directory.
     #[arg(long, value_name = "DIR")]
@@ -64,6 +69,13 @@ pub struct EnsembleArgs {
     /// Progress display on stderr.
     #[arg(long, value_enum, value_name = "MODE", default_value_t = ProgressMode::Auto)]
     pub progress: ProgressMode,
+    /// Write DIR/sweep.sbatch (a Slurm job array, one task per member not yet done) and print
+    /// how to submit it, instead of running the members here; once every member is done, the
+    /// same command pools them.
+    #[arg(long)]
+    pub slurm: bool,
+    #[command(flatten)]
+    pub resources: SlurmFlags,
 }
 
 /// Runs `platefall ensemble ...`.
@@ -79,5 +91,12 @@ pub fn run_ensemble(args: &EnsembleArgs) -> Exit {
         checkpoint_every: args.checkpoint_every,
         threads: args.threads,
     };
-    ensemble::main(&spec, &args.output, args.jobs, args.progress.into())
+    let slurm = args.slurm.then(|| args.resources.overrides());
+    ensemble::main(
+        &spec,
+        &args.output,
+        args.jobs,
+        args.progress.into(),
+        slurm.as_ref(),
+    )
 }

@@ -76,6 +76,20 @@ pub struct SlurmFlags {
     pub signal_lead: Option<u32>,
 }
 
+impl SlurmFlags {
+    /// The resources these flags give.
+    pub(super) fn overrides(&self) -> SlurmOverrides {
+        SlurmOverrides {
+            partition: self.partition.clone(),
+            time: self.time.clone(),
+            mem: self.mem.clone(),
+            cpus: self.cpus,
+            max_parallel: self.max_parallel,
+            signal_lead: self.signal_lead,
+        }
+    }
+}
+
 /// The sweep's own subcommands.
 #[derive(Subcommand, Debug)]
 pub enum SweepAction {
@@ -147,17 +161,7 @@ impl SweepArgs {
                 dry_run: self.dry_run,
                 output: self.output.clone(),
                 progress: self.progress.into(),
-                slurm: self.slurm.then(|| {
-                    let r = &self.resources;
-                    SlurmOverrides {
-                        partition: r.partition.clone(),
-                        time: r.time.clone(),
-                        mem: r.mem.clone(),
-                        cpus: r.cpus,
-                        max_parallel: r.max_parallel,
-                        signal_lead: r.signal_lead,
-                    }
-                }),
+                slurm: self.slurm.then(|| self.resources.overrides()),
             },
         })
     }

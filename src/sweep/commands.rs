@@ -14,7 +14,7 @@ use super::progress::{Progress, ProgressMode};
 use super::request::SweepRequest;
 use super::results::{gather, not_completed, outcome, tally, write_tables};
 use super::runner::{interrupt_counter, run_pool};
-use super::slurm::submit_script;
+use super::slurm::{quote, submit_script};
 use crate::exit::Exit;
 use platefall_post::phase::CaseState;
 
@@ -50,12 +50,22 @@ fn dispatch(request: &SweepRequest, commands: &dyn CaseCommands) -> Result<Exit,
                 dry_run(&layout, &plan, &cases);
                 Ok(Exit::Completed)
             } else if let Some(resources) = slurm {
-                submit_script(&layout, &plan, &cases, resources)
+                let after = collect_hint(&layout)?;
+                submit_script(&layout, &plan, &cases, resources, &after)
             } else {
                 local(*jobs, *progress, &layout, &plan, &cases)
             }
         }
     }
+}
+
+/// What a sweep submitted to Slurm runs afterwards: `sweep collect DIR`.
+fn collect_hint(layout: &Layout) -> Result<String, Failure> {
+    Ok(format!(
+        "merge what has finished (any time) with: {} sweep collect {}",
+        quote(&this_exe()?.to_string_lossy()),
+        quote(&layout.dir.to_string_lossy())
+    ))
 }
 
 /// `--output`, else the plan's `output`.
@@ -184,27 +194,38 @@ fn merge(layout: &Layout, plan: &Plan, cases: &[CaseSpec]) -> Result<Exit, Failu
     })
 }
 
+/// The command that made a directory without a plan of its own (`ensemble`), from its
+/// `plan.toml`; None for a sweep's.
+fn made_by(layout: &Layout) -> Option<String> {
+    let text = std::fs::read_to_string(layout.plan()).unwrap_or_default();
+    let rest = text.strip_prefix(plan::MADE_BY)?;
+    Some(rest.split('`').next().unwrap_or_default().to_string())
+}
+
+/// The manifest of a prepared directory, which must exist.
+fn manifest_of(layout: &Layout) -> Result<Manifest, Failure> {
+    read_manifest(layout)?.ok_or_else(|| {
+        Failure::input(format!(
+            "{} is not a sweep directory (no sweep.json): give the directory a sweep wrote",
+            layout.dir.display()
+        ))
+    })
+}
+
 /// The plan and cases of a prepared directory (its own `plan.toml`, checked against `sweep.json`).
 pub(crate) fn open_prepared(
     dir: &Path,
     commands: &dyn CaseCommands,
 ) -> Result<(Layout, Plan, Manifest), Failure> {
     let layout = Layout::new(dir);
-    let text = std::fs::read_to_string(layout.plan()).unwrap_or_default();
-    if let Some(rest) = text.strip_prefix(plan::MADE_BY) {
-        let command = rest.split('`').next().unwrap_or_default();
+    if let Some(command) = made_by(&layout) {
         return Err(Failure::input(format!(
             "{} was made by `platefall {command}`, not from a plan: run that command again to go \
              on",
             layout.dir.display()
         )));
     }
-    let manifest = read_manifest(&layout)?.ok_or_else(|| {
-        Failure::input(format!(
-            "{} is not a sweep directory (no sweep.json): give the directory a sweep wrote",
-            layout.dir.display()
-        ))
-    })?;
+    let manifest = manifest_of(&layout)?;
     let mut plan = plan::load(&layout.plan(), commands)?;
     if let Some(why) = difference(&manifest, &Manifest::of(&plan, &plan.cases())) {
         return Err(Failure::input(format!(
@@ -224,10 +245,21 @@ fn collect(dir: &Path, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
     merge(&layout, &plan, &manifest.cases)
 }
 
-/// `run-case DIR INDEX`: one case of a prepared directory, as a child process; exits with the
-/// case's exit code.
+/// `run-case DIR INDEX`: one case of a prepared directory (a sweep's, or an ensemble's
+/// members), as a child process; exits with the case's exit code.
 fn run_case(dir: &Path, index: usize, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
-    let (layout, _plan, manifest) = open_prepared(dir, commands)?;
+    // A directory made by another command (an ensemble's members) has only its manifest.
+    let (layout, manifest) = match made_by(&Layout::new(dir)) {
+        Some(_) => {
+            let layout = Layout::new(dir);
+            let manifest = manifest_of(&layout)?;
+            (layout, manifest)
+        }
+        None => {
+            let (layout, _plan, manifest) = open_prepared(dir, commands)?;
+            (layout, manifest)
+        }
+    };
     let case = manifest.cases.get(index).ok_or_else(|| {
         Failure::input(format!(
             "case index {index} is out of range: accepted 0..={}",

@@ -97,7 +97,7 @@ pub(crate) fn signal_lead_of(res: &SlurmPlan) -> u64 {
 }
 
 /// A word for the shell, single-quoted when it needs to be.
-fn quote(s: &str) -> String {
+pub(crate) fn quote(s: &str) -> String {
     if !s.is_empty()
         && s.chars()
             .all(|c| c.is_ascii_alphanumeric() || "-_./=:,+%@".contains(c))
@@ -123,13 +123,14 @@ fn job_name(name: &str) -> String {
     format!("platefall-{clean}")
 }
 
-/// The text of `sweep.sbatch`.
+/// The text of `sweep.sbatch`; `after` says what to run once its tasks have finished.
 pub(crate) fn script(
     layout: &Layout,
     plan: &Plan,
     todo: &[usize],
     res: &SlurmPlan,
     exe: &str,
+    after: &str,
 ) -> String {
     let dir = layout.dir.to_string_lossy();
     let logs = layout.slurm_logs();
@@ -148,11 +149,7 @@ pub(crate) fn script(
         "# Submit: sbatch {}\n",
         quote(&layout.output("sweep.sbatch").to_string_lossy())
     ));
-    s.push_str(&format!(
-        "# Merge what has finished: {} sweep collect {}\n",
-        quote(exe),
-        quote(&dir)
-    ));
+    s.push_str(&format!("# Then {after}\n"));
     let mut opt = |line: String| s.push_str(&format!("#SBATCH {line}\n"));
     opt(format!("--job-name={}", job_name(&plan.name)));
     opt(format!("--array={array}"));
@@ -192,12 +189,13 @@ pub(crate) fn script(
 }
 
 /// `--slurm`: prepares the directory, writes `DIR/sweep.sbatch` for the cases not yet done and
-/// prints how to submit it.
+/// prints how to submit it and, from `after`, what to run once its tasks have finished.
 pub(crate) fn submit_script(
     layout: &Layout,
     plan: &Plan,
     cases: &[CaseSpec],
     flags: &SlurmOverrides,
+    after: &str,
 ) -> Result<Exit, Failure> {
     let res = resources(&plan.slurm, flags);
     check_slurm(&res, &flags.keys())?;
@@ -217,13 +215,12 @@ pub(crate) fn submit_script(
     let path = layout.output("sweep.sbatch");
     if todo.is_empty() {
         println!(
-            "every case of {} is done: nothing to submit; merge with: platefall sweep collect {}",
-            layout.dir.display(),
+            "every case of {} is done: nothing to submit; {after}",
             layout.dir.display()
         );
         return Ok(Exit::Completed);
     }
-    let text = script(layout, plan, &todo, &res, &exe.to_string_lossy());
+    let text = script(layout, plan, &todo, &res, &exe.to_string_lossy(), after);
     write_output(&path, text.as_bytes())?;
     if todo.last().is_some_and(|&i| i > DEFAULT_MAX_ARRAY_INDEX) {
         eprintln!(
@@ -239,11 +236,7 @@ pub(crate) fn submit_script(
         cases.len() - todo.len()
     );
     println!("submit with:\n  sbatch {}", quote(&path.to_string_lossy()));
-    println!(
-        "then merge what has finished (any time) with:\n  {} sweep collect {}",
-        quote(&exe.to_string_lossy()),
-        quote(&layout.dir.to_string_lossy())
-    );
+    println!("then {after}");
     Ok(Exit::Completed)
 }
 

@@ -220,7 +220,8 @@ pub struct Decoded {
     /// Recording chunks (not the blueprint's).
     pub chunks: Vec<Chunk>,
     pub has_blueprint: bool,
-    /// The blueprint store's chunks (the default layout and its view properties).
+    /// The chunks of the blueprint store made active last (the default layout and its view
+    /// properties).
     pub blueprint: Vec<Chunk>,
     /// True if the file ends with a footer (RRD manifest): the sink was finalised.
     pub has_footer: bool,
@@ -382,6 +383,9 @@ fn decode_impl(path: &Path, partial: bool) -> Decoded {
     let file = std::fs::File::open(path).expect("open rrd");
     let mut it = DecoderApp::decode_lazy(BufReader::new(file));
     let mut d = Decoded::default();
+    // Blueprint chunks by store, and the store the last activation made active.
+    let mut stores: Vec<(rerun::StoreId, Vec<Chunk>)> = Vec::new();
+    let mut active = None;
     for msg in &mut it {
         let msg = match msg {
             Ok(m) => m,
@@ -392,8 +396,11 @@ fn decode_impl(path: &Path, partial: bool) -> Decoded {
             LogMsg::ArrowMsg(store_id, arrow) => {
                 if store_id.kind() != rerun::StoreKind::Recording {
                     d.has_blueprint = true;
-                    d.blueprint
-                        .push(Chunk::from_arrow_msg(&arrow).expect("blueprint chunk"));
+                    let chunk = Chunk::from_arrow_msg(&arrow).expect("blueprint chunk");
+                    match stores.iter_mut().find(|(id, _)| *id == store_id) {
+                        Some((_, chunks)) => chunks.push(chunk),
+                        None => stores.push((store_id, vec![chunk])),
+                    }
                     continue;
                 }
                 let id = store_id.recording_id().to_string();
@@ -415,9 +422,19 @@ fn decode_impl(path: &Path, partial: bool) -> Decoded {
                 }
                 d.chunks.push(chunk);
             }
-            LogMsg::SetStoreInfo(_) | LogMsg::BlueprintActivationCommand(_) => {}
+            LogMsg::BlueprintActivationCommand(cmd) => {
+                if cmd.make_active {
+                    active = Some(cmd.blueprint_id);
+                }
+            }
+            LogMsg::SetStoreInfo(_) => {}
         }
     }
+    d.blueprint = stores
+        .into_iter()
+        .find(|(id, _)| Some(id) == active.as_ref())
+        .map(|(_, chunks)| chunks)
+        .unwrap_or_default();
     d.has_footer = !it.rrd_manifests().map(|m| m.is_empty()).unwrap_or(true);
     d
 }

@@ -134,7 +134,8 @@
 //! chosen from the case (`platefall_post::ViewDefaults`, from `RunInfo::view`: the developed
 //! motion inside, the impulsive-start spike outside) and the wake and close-up views on fixed
 //! bounds; these are view properties in the blueprint store (`view/<id>/ScalarAxis`,
-//! `view/<id>/VisualBounds2D`).
+//! `view/<id>/VisualBounds2D`). At the end of a run the layout is sent again, made active, with
+//! the trajectory view's bounds holding the whole path and every wake window (`viewer/extent.rs`).
 //!
 //! The "growing" curves (trajectory, strobe, α plots) are split into segments of
 //! max(2, t_end/40) c/U, one entity each, re-sent only while their segment grows, so the total

@@ -1,6 +1,7 @@
 //! `platefall ensemble`: M members branched from one spun-up run's checkpoint, each a `platefall
 //! resume --perturb-omega` of it with its own seeded perturbation of θ̇, run as a sweep of child
-//! processes in an output directory, and pooled (docs/statistics.md, "Ensembles of independent
+//! processes in an output directory (or, with `--slurm`, as the tasks of a Slurm job array that
+//! fill the same directory), and pooled (docs/statistics.md, "Ensembles of independent
 //! members"): per summary quantity the ensemble mean with its 95 % interval from the members'
 //! means, combined with their own intervals where the F test allows, Σ n_eff and the
 //! independence verdict; and when the members' θ̇ parted, measured from their separation.

@@ -1,6 +1,8 @@
 //! Running an ensemble: its members as a sweep of child processes in the output directory (the
 //! sweep's local pool, so a member whose summary is complete is not run again and Ctrl-C
-//! finalises the running ones), then the pooled statistics of the completed members.
+//! finalises the running ones) or as the tasks of a Slurm job array (`--slurm`, the sweep's
+//! script: each task a `platefall sweep run-case` of the directory), then the pooled
+//! statistics of the completed members.
 use std::path::Path;
 
 use serde::Serialize;
@@ -11,11 +13,13 @@ use super::parting::{parting, Parting};
 use super::pooled::{pool_keys, table, Quantity};
 use super::traces::trace;
 use crate::exit::Exit;
+use crate::sweep::child::is_done;
 use crate::sweep::commands::local;
 use crate::sweep::failure::{write_output, Failure};
 use crate::sweep::layout::Layout;
 use crate::sweep::plan::{Axis, CaseSpec, Plan, MADE_BY};
 use crate::sweep::progress::ProgressMode;
+use crate::sweep::slurm::{submit_script, SlurmOverrides};
 use crate::sweep::values::{Scale, Value};
 use platefall_core::sim::CaseKind;
 use platefall_record::viewer::write_ensemble_recording;
@@ -43,8 +47,9 @@ pub(crate) fn main(
     output: &Path,
     jobs: Option<usize>,
     progress: ProgressMode,
+    slurm: Option<&SlurmOverrides>,
 ) -> Exit {
-    match run(spec, output, jobs, progress) {
+    match run(spec, output, jobs, progress, slurm) {
         Ok(code) => code,
         Err(f) => {
             eprintln!("error: {}", f.message);
@@ -58,6 +63,7 @@ fn run(
     output: &Path,
     jobs: Option<usize>,
     progress: ProgressMode,
+    slurm: Option<&SlurmOverrides>,
 ) -> Result<Exit, Failure> {
     let (ckpt, branch) = branch_of(spec)?;
     let case = ckpt
@@ -88,7 +94,14 @@ fn run(
     );
     let plan = Plan::along("ensemble", case, axis, text);
     let layout = Layout::new(output);
-    let code = local(jobs, progress, &layout, &plan, &cases)?;
+    let code = match slurm {
+        Some(flags) if !cases.iter().all(|c| is_done(&layout, &c.id)) => {
+            return submit_script(&layout, &plan, &cases, flags, SLURM_AFTER);
+        }
+        // With --slurm and every member done: pool them.
+        Some(_) => Exit::Completed,
+        None => local(jobs, progress, &layout, &plan, &cases)?,
+    };
     if code == Exit::Interrupted {
         return Ok(code);
     }
@@ -99,6 +112,10 @@ fn run(
         written
     })
 }
+
+/// What to run once an ensemble's Slurm array has finished.
+const SLURM_AFTER: &str = "once the array has finished, run this `platefall ensemble` command \
+     again: it pools the members (and writes a script for any member not done)";
 
 /// A completed member's summary.
 fn completed_summary(layout: &Layout, id: &str) -> Option<Json> {

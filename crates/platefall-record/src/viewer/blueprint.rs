@@ -27,7 +27,7 @@ use rerun::blueprint::{
 use rerun::{RecordingStream, RecordingStreamResult};
 
 use super::layout::{paths, ANGLES};
-use super::legend::{caption_path, closeup_box, legend_path, wake_box};
+use super::legend::{caption_path, closeup_box, legend_path, wake_box, ScreenBox};
 use super::polar::polar_axes;
 use super::view_properties::{send_with_properties, ViewProperties};
 use platefall_post::{FieldWindow, PlotRanges};
@@ -43,6 +43,8 @@ pub(crate) struct ViewFit {
     pub plots: Option<PlotRanges>,
     /// c/U in seconds, for a plate with physical units.
     pub time_unit_s: Option<f64>,
+    /// The trajectory view's region (None: the viewer fits it to what is in view).
+    pub trajectory: Option<ScreenBox>,
 }
 
 impl ViewFit {
@@ -124,9 +126,12 @@ fn flow_views(props: &mut ViewProperties, fit: &ViewFit) -> (ContainerLike, Cont
 }
 
 /// A time-series view of `series` named `name`.
-fn time_series(name: &str, series: &[&str]) -> ContainerLike {
+pub(crate) fn time_series<S: AsRef<str>>(
+    name: &str,
+    series: impl IntoIterator<Item = S>,
+) -> ContainerLike {
     TimeSeriesView::new(name)
-        .with_contents(series.iter().map(|s| format!("+ {s}")))
+        .with_contents(series.into_iter().map(|s| format!("+ {}", s.as_ref())))
         .into()
 }
 
@@ -137,9 +142,9 @@ fn plots(props: &mut ViewProperties, fit: &ViewFit) -> [ContainerLike; 6] {
         TimeSeriesView::new(format!("Coefficients C_L, C_D, C_M ({})", fit.time_axis()))
             .with_origin(paths::COEFFICIENTS)
             .into();
-    let angles = time_series("Angles α, γ [rad]", &ANGLES);
-    let rate = time_series("Rotation rate dθ/dt [U/c]", &["/motion/omega"]);
-    let speed = time_series("Speed V [U]", &["/motion/speed"]);
+    let angles = time_series("Angles α, γ [rad]", ANGLES);
+    let rate = time_series("Rotation rate dθ/dt [U/c]", ["/motion/omega"]);
+    let speed = time_series("Speed V [U]", ["/motion/speed"]);
     let pi = std::f64::consts::PI;
     props.y_range(&angles, [-pi - 0.3, pi + 0.3]);
     let polar = |name: &str, curves: &str| -> ContainerLike {
@@ -175,7 +180,7 @@ fn plots(props: &mut ViewProperties, fit: &ViewFit) -> [ContainerLike; 6] {
 pub(crate) fn default_blueprint(fit: &ViewFit) -> (Blueprint, ViewProperties) {
     let mut props = ViewProperties::default();
     let (wake, closeup) = flow_views(&mut props, fit);
-    let trajectory = Spatial2DView::new("Trajectory")
+    let trajectory: ContainerLike = Spatial2DView::new("Trajectory")
         .with_origin(paths::WORLD_SCREEN)
         .with_contents([
             format!("+ {}/vorticity", paths::WAKE),
@@ -183,7 +188,11 @@ pub(crate) fn default_blueprint(fit: &ViewFit) -> (Blueprint, ViewProperties) {
             format!("+ {}/**", paths::TRAJECTORY),
             format!("+ {}/**", paths::STROBE),
             format!("+ {}", paths::OUTLINE),
-        ]);
+        ])
+        .into();
+    if let Some(b) = fit.trajectory {
+        props.bounds(&trajectory, b.x, b.y);
+    }
     let [coefficients, angles, rate, speed, polar_coefficients, polar_motion] =
         plots(&mut props, fit);
     let solver = TimeSeriesView::new("Solver").with_contents([
@@ -200,7 +209,7 @@ pub(crate) fn default_blueprint(fit: &ViewFit) -> (Blueprint, ViewProperties) {
         polar_motion,
         solver.into(),
     ]);
-    let bottom = Horizontal::new([closeup, trajectory.into()]);
+    let bottom = Horizontal::new([closeup, trajectory]);
     let left = Vertical::new([wake, bottom.into()]).with_row_shares([1.1, 1.0]);
     let motion = Horizontal::new([rate, speed]);
     let right = Vertical::new([coefficients, angles, motion.into(), info.into()])

@@ -5,6 +5,7 @@
 //! ([`write_phase_recording`]).
 mod blueprint;
 mod curves;
+mod extent;
 mod images;
 mod layout;
 mod legend;

@@ -11,6 +11,7 @@ use rerun::{Color, LineStrips2D, RecordingStream, Scalars, TextLog, TimeColumn, 
 
 use super::blueprint::{send_default_blueprint, ViewFit};
 use super::curves::SegmentedCurve;
+use super::extent::Extent;
 use super::images::log_field_images;
 use super::layout::*;
 use super::polar::{polar_axes, polar_curves};
@@ -22,6 +23,10 @@ use crate::messages::{RunInfo, RunOutcome};
 use crate::options::RecordOptions;
 use platefall_core::sim::{FieldSnapshot, StepSample};
 use platefall_post::{FieldPainter, ImageGrid, PainterOptions, SnapshotFields};
+
+/// Chords around the path in the trajectory view fitted at the end (the strobe's plates reach
+/// half a chord beyond it).
+const TRAJECTORY_MARGIN: f64 = 1.0;
 
 /// All logging state of one run.
 pub(crate) struct Scene {
@@ -39,6 +44,10 @@ pub(crate) struct Scene {
     next_pose_t: f64,
     last_flush: Instant,
     trajectory: SegmentedCurve,
+    /// What the views were fitted to at the start.
+    fit: ViewFit,
+    /// The region the path covers (for the trajectory view at the end).
+    path_extent: Extent,
     strobe: SegmentedCurve,
     /// The α plots' curves and their α scales.
     polars: Vec<(SegmentedCurve, f64)>,
@@ -66,6 +75,7 @@ impl Scene {
             wake: wake_window,
             plots: info.view.plot_ranges,
             time_unit_s: info.view.time_unit_s,
+            trajectory: None,
         };
         send_default_blueprint(&rec, &fit)?;
         let section = SectionDrawing::new(&info.section);
@@ -111,6 +121,8 @@ impl Scene {
             next_pose_t: f64::NEG_INFINITY,
             last_flush: Instant::now(),
             trajectory: SegmentedCurve::new(paths::TRAJECTORY, seg_len, 0xF2A93BFF, 1.2, inf),
+            fit,
+            path_extent: Extent::default(),
             strobe: SegmentedCurve::new(paths::STROBE, seg_len, 0xC8C8C8FF, 0.8, inf),
             polars: polar_curves(seg_len, &polar_axes(info.view.plot_ranges)),
             next_sample_t: f64::NEG_INFINITY,
@@ -201,6 +213,7 @@ impl Scene {
             self.next_sample_t = s.t + SAMPLE_EVERY;
             self.set_time(s.step, s.t);
             self.trajectory.push(&self.rec, s.t, [s.x, s.y])?;
+            self.path_extent.include([s.x, s.y]);
             let values = [s.cl, s.cd, s.cm, s.speed, s.omega];
             for ((curve, scale), v) in self.polars.iter_mut().zip(values) {
                 let point = [*scale * s.alpha, v.clamp(-POLAR_CLIP, POLAR_CLIP)];
@@ -343,6 +356,17 @@ impl Scene {
         Ok(true)
     }
 
+    /// Sends the layout again with the trajectory view opening on the whole path and every wake
+    /// window it showed (the viewer's own fit follows what is in view and crops a long path).
+    fn fit_trajectory_view(&mut self) -> rerun::RecordingStreamResult<()> {
+        let extent = self.path_extent.union(self.wake.covered());
+        let Some(region) = extent.screen_box(TRAJECTORY_MARGIN) else {
+            return Ok(());
+        };
+        self.fit.trajectory = Some(region);
+        send_default_blueprint(&self.rec, &self.fit)
+    }
+
     /// Final curves, status and summary.
     pub fn finish(
         &mut self,
@@ -362,6 +386,7 @@ impl Scene {
             c.log(&self.rec)?;
         }
         self.strobe.log(&self.rec)?;
+        self.fit_trajectory_view()?;
         let (level, line) = outcome_line(&outcome.status);
         self.status(step, t, level, &line)?;
         self.rec.log_static(

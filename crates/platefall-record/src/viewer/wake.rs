@@ -6,6 +6,7 @@ use std::sync::Arc;
 
 use rerun::{Quaternion, RecordingStream, RecordingStreamResult, Transform3D};
 
+use super::extent::Extent;
 use super::images::log_field_images;
 use super::layout::{paths, z_rotation, WAKE_IMAGE_LEVELS};
 use super::section::SectionDrawing;
@@ -24,6 +25,9 @@ pub(super) struct WakeScene {
     painter: WakePainter,
     heading: PathHeading,
     section: SectionDrawing,
+    window: FieldWindow,
+    /// The region every posed window covers (inertial axes).
+    covered: Extent,
 }
 
 impl WakeScene {
@@ -38,6 +42,8 @@ impl WakeScene {
             painter: WakePainter::new(grid, window, long_side, frame),
             heading: PathHeading::new(HEADING_SPAN),
             section,
+            window,
+            covered: Extent::default(),
         }
     }
 
@@ -55,13 +61,16 @@ impl WakeScene {
     /// draws the plate (pitch `theta`) in it: the wake view shows this plate, so that image and
     /// plate agree between snapshots (the caller has set the time).
     pub(super) fn log_pose(
-        &self,
+        &mut self,
         rec: &RecordingStream,
         x: f64,
         y: f64,
         theta: f64,
     ) -> RecordingStreamResult<()> {
         let heading = self.heading.angle();
+        for corner in self.corners(x, y, heading) {
+            self.covered.include(corner);
+        }
         rec.log(
             paths::WAKE,
             &Transform3D::from_translation_rotation(
@@ -72,9 +81,22 @@ impl WakeScene {
         rec.log(paths::WAKE_PLATE, &self.section.drawing(theta - heading))
     }
 
+    /// The window's corners in inertial axes when it is posed at (x, y) turned to `heading`.
+    fn corners(&self, x: f64, y: f64, heading: f64) -> [[f64; 2]; 4] {
+        let (s, c) = heading.sin_cos();
+        let w = &self.window;
+        [(w.x0, w.y0), (w.x1, w.y0), (w.x1, w.y1), (w.x0, w.y1)]
+            .map(|(u, v)| [x + c * u - s * v, y + s * u + c * v])
+    }
+
+    /// The region every window posed so far covers.
+    pub(super) fn covered(&self) -> Extent {
+        self.covered
+    }
+
     /// Paints and logs the wake of `snap` (the caller has set the snapshot's time).
     pub(super) fn log(
-        &self,
+        &mut self,
         rec: &RecordingStream,
         snap: &FieldSnapshot,
         fields: &SnapshotFields,

@@ -15,12 +15,12 @@
 //! viewer writes it as seconds).
 use rerun::blueprint::{
     Blueprint, ContainerLike, Horizontal, Spatial3DView, Tabs, TextDocumentView, TextLogView,
-    TimeSeriesView, Vertical,
+    Vertical,
 };
 use rerun::{RecordingStream, RecordingStreamResult};
 
 use super::paths3;
-use crate::viewer::blueprint::with_panels;
+use crate::viewer::blueprint::{time_series, with_panels};
 use crate::viewer::view_properties::{send_with_properties, ViewProperties};
 
 /// The layout above.
@@ -28,10 +28,8 @@ fn layout() -> Blueprint {
     let flight = Spatial3DView::new("Flight")
         .with_origin(paths3::WORLD)
         .with_contents(["+ /world/**"]);
-    let series = |name: &str, base: &str, names: &[&str]| -> ContainerLike {
-        TimeSeriesView::new(name)
-            .with_contents(names.iter().map(|n| format!("+ {base}/{n}")))
-            .into()
+    let series = |name: &str, base: &str, names: &[&str]| {
+        time_series(name, names.iter().map(|n| format!("{base}/{n}")))
     };
     let info = Tabs::new([
         ContainerLike::from(TextDocumentView::new("Configuration").with_origin(paths3::CONFIG)),
