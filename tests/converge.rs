@@ -212,3 +212,96 @@ fn bad_options_are_refused_with_one_line_before_anything_is_written() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An ensemble directory as `platefall ensemble` leaves it, with one pooled quantity: its
+/// pooled mean and half-width, `done` of `members` completed, and the first member's summary.
+fn pooled_ensemble(dir: &Path, mean: f64, half_width: f64, done: usize, members: usize) {
+    let ids: Vec<String> = (0..members).map(|k| format!("m{k:03}")).collect();
+    let pooled = serde_json::json!({
+        "members": ids.iter().map(|id| serde_json::json!({"id": id, "perturbation": 1e-6}))
+            .collect::<Vec<_>>(),
+        "completed": ids[..done],
+        "quantities": {"mean_omega": {"mean": mean, "half_width": half_width, "members": done}},
+    });
+    std::fs::create_dir_all(dir.join("cases/m000")).unwrap();
+    std::fs::write(dir.join("ensemble.json"), pooled.to_string()).unwrap();
+    let member = serde_json::json!({"cells": 1000, "steps": 400, "t_end": 20.0});
+    std::fs::write(dir.join("cases/m000/summary.json"), member.to_string()).unwrap();
+}
+
+/// The study of the ensembles `dirs` (comma-separated) at N = 16, 32, 64, written to `out`.
+fn of_ensembles(dirs: &str, out: &Path) -> Output {
+    platefall()
+        .args([
+            "converge",
+            "--refine",
+            "resolution=16,32,64",
+            "--ensembles",
+            dirs,
+        ])
+        .arg("--output")
+        .arg(out)
+        .output()
+        .unwrap()
+}
+
+/// `converge --ensembles`: each level is an ensemble's pooled mean with its pooled half-width.
+/// Values f(h) = 2 + 3h² at N = 16, 32, 64 give order 2 when the ensembles' half-widths are
+/// below the differences (1e-4 against ≥ 7e-4), and "not resolved by the noise" when they are
+/// not (0.01); a level whose ensemble is unfinished is left out, and a wrong count of
+/// directories or one without `ensemble.json` is refused in one line before anything is written.
+#[test]
+fn ensembles_as_levels_decide_with_their_pooled_intervals() {
+    let dir = scratch("ensembles");
+    let f = |n: f64| 2.0 + 3.0 / (n * n);
+    let run = |hw: f64, name: &str| {
+        let dirs: Vec<String> = [16.0, 32.0, 64.0]
+            .iter()
+            .map(|&n| {
+                let d = dir.join(format!("{name}-{n}"));
+                pooled_ensemble(&d, f(n), hw, 8, 8);
+                d.to_string_lossy().into_owned()
+            })
+            .collect();
+        let out = dir.join(format!("study-{name}"));
+        let o = of_ensembles(&dirs.join(","), &out);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        (json(&out.join("convergence.json")), dirs)
+    };
+    let (tight, dirs) = run(1e-4, "tight");
+    let levels = tight["levels"].as_array().unwrap();
+    assert!(levels
+        .iter()
+        .all(|l| l["status"] == "completed" && l["ci_batches"] == 8));
+    assert_eq!(levels[0]["h"], 1.0 / 16.0);
+    let t = &tight["quantities"][0]["triples"][0];
+    assert_eq!(t["status"], "monotone_convergence", "{t}");
+    assert!((t["order"].as_f64().unwrap() - 2.0).abs() < 1e-9, "{t}");
+    let (wide, _) = run(0.01, "wide");
+    let t = &wide["quantities"][0]["triples"][0];
+    assert_eq!(t["status"], "not_resolved_by_the_noise", "{t}");
+    // One level unfinished (5 of 8 members): left out, and said so.
+    pooled_ensemble(Path::new(&dirs[1]), f(32.0), 1e-4, 5, 8);
+    let out = dir.join("study-partial");
+    let o = of_ensembles(&dirs.join(","), &out);
+    assert_eq!(o.status.code(), Some(3), "{}", text(&o.stderr));
+    let partial = json(&out.join("convergence.json"));
+    assert_eq!(partial["levels"][1]["status"], "unfinished");
+    assert_eq!(partial["completed"], 2);
+    for (list, needle) in [
+        (dirs[..2].join(","), "2 directories for 3 levels"),
+        (
+            format!("{},{},{}", dirs[0], dirs[1], dir.join("none").display()),
+            "holds no ensemble.json",
+        ),
+    ] {
+        let out = dir.join("refused");
+        let o = of_ensembles(&list, &out);
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{err}");
+        assert!(!out.exists());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

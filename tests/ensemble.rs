@@ -201,6 +201,34 @@ fn as_slurm_array(dir: &Path, members: &[&str]) {
     );
     let out = run(dir, &["sweep", "run-case", "slm", "3"]);
     expect_one_line_error(&out, "case index 3 is out of range: accepted 0..=2");
+    // Pooled ensembles are the levels of `converge --ensembles` (here the same ensemble three
+    // times: every quantity is the pooled mean at each level, the members its batches).
+    let refine = ["converge", "--refine", "resolution=16,17,18"];
+    let mut args = refine.to_vec();
+    args.extend(["--ensembles", "ens,slm,ens", "--output", "conv"]);
+    expect_code(&run(dir, &args), 0);
+    let study: serde_json::Value =
+        serde_json::from_slice(&read(dir, "conv/convergence.json")).unwrap();
+    assert!(study["levels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|l| l["ci_batches"] == 3));
+    let omega = study["quantities"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|q| q["key"] == "mean_omega")
+        .expect("θ̇ in the study");
+    let mean = &pooled_in("ens")["quantities"]["mean_omega"]["mean"];
+    assert!(
+        omega["values"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|v| v == mean),
+        "{omega}"
+    );
 }
 
 #[test]

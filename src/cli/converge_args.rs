@@ -15,7 +15,12 @@ Example (the card's free fall, its plate 1/64 chord thick at every N, averaged o
 The levels run as a sweep in DIR (DIR/plan.toml, DIR/cases/<id>/summary.json, results.csv): a level \
 whose summary is complete is not run again, so the same command resumes a stopped study. The study \
 is DIR/convergence.md and DIR/convergence.json; `platefall converge collect DIR` rewrites them from \
-the finished levels.";
+the finished levels.
+
+With --ensembles the levels are ensembles already pooled (`platefall ensemble`, one directory per \
+value), so that the members' spread, not one run's, decides which differences are resolved:
+  platefall converge --refine resolution=64,128,256 --ensembles ens/64,ens/128,ens/256 \
+      --output conv/card-ens";
 
 /// Run one case at three or more values of a refined option (resolution, cc, cfl, dt-max or
 /// extent) and report, per quantity of its summary, the observed order of convergence, the
@@ -48,12 +53,22 @@ pub struct ConvergeArgs {
     /// Progress display on stderr.
     #[arg(long, value_enum, value_name = "MODE", default_value_t = ProgressMode::Auto)]
     pub progress: ProgressMode,
+    /// Levels that are ensembles pooled by `platefall ensemble`, one directory per value of
+    /// --refine in the same order: each level's value and 95 % half-width are the pooled ones,
+    /// and nothing runs.
+    #[arg(
+        long,
+        value_name = "DIR1,DIR2,DIR3",
+        value_delimiter = ',',
+        conflicts_with_all = ["case", "jobs", "threads"]
+    )]
+    pub ensembles: Option<Vec<PathBuf>>,
     /// The case and its options, as on its own command line (`free --turns 30 ...`).
     #[arg(
         value_name = "CASE [OPTIONS]",
         trailing_var_arg = true,
         allow_hyphen_values = true,
-        required = true
+        required_unless_present = "ensembles"
     )]
     pub case: Vec<String>,
 }
@@ -74,6 +89,11 @@ impl ConvergeArgs {
     pub(super) fn request(&self) -> ConvergeRequest {
         match &self.action {
             Some(ConvergeAction::Collect { dir }) => ConvergeRequest::Collect { dir: dir.clone() },
+            None if self.ensembles.is_some() => ConvergeRequest::Ensembles {
+                refine: self.refine.clone().unwrap_or_default(),
+                dirs: self.ensembles.clone().unwrap_or_default(),
+                output: self.output.clone().unwrap_or_default(),
+            },
             None => ConvergeRequest::Run {
                 refine: self.refine.clone().unwrap_or_default(),
                 output: self.output.clone().unwrap_or_default(),

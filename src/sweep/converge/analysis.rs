@@ -64,7 +64,7 @@ pub(crate) struct Study {
     pub(crate) notes: Vec<String>,
 }
 
-fn num(o: &Object, key: &str) -> Option<f64> {
+pub(crate) fn num(o: &Object, key: &str) -> Option<f64> {
     get(o, key).and_then(Json::as_f64)
 }
 
@@ -77,7 +77,7 @@ fn refined_value(case: &CaseSpec) -> f64 {
 }
 
 /// The spacing h of a level from its refined value and its summary.
-fn spacing(refined: &Refined, value: f64, summary: &Object) -> Option<f64> {
+pub(crate) fn spacing(refined: &Refined, value: f64, summary: &Object) -> Option<f64> {
     match refined {
         Refined::Resolution => Some(1.0 / value),
         Refined::Extent => Some(1.0 / value),
@@ -101,7 +101,7 @@ fn quantity_keys(summary: &Object) -> Vec<String> {
 
 /// The study of the levels `cases` in `layout`.
 pub(crate) fn analyse(layout: &Layout, cases: &[CaseSpec], refined: &Refined) -> Study {
-    let mut levels: Vec<(LevelInfo, Option<Object>)> = cases
+    let levels: Vec<(LevelInfo, Option<Object>)> = cases
         .iter()
         .map(|c| {
             let summary = std::fs::read_to_string(layout.summary(&c.id))
@@ -137,6 +137,26 @@ pub(crate) fn analyse(layout: &Layout, cases: &[CaseSpec], refined: &Refined) ->
             (info, usable)
         })
         .collect();
+    let case = cases
+        .first()
+        .map(|c| {
+            c.args
+                .iter()
+                .filter(|a| !a.starts_with(&format!("--{}=", refined.name())))
+                .cloned()
+                .collect()
+        })
+        .unwrap_or_default();
+    analyse_levels(levels, refined, case)
+}
+
+/// The study of `levels` (each with its summary, or None when it is not usable), of the case
+/// `case` (its command line after `platefall`).
+pub(crate) fn analyse_levels(
+    mut levels: Vec<(LevelInfo, Option<Object>)>,
+    refined: &Refined,
+    case: Vec<String>,
+) -> Study {
     // Coarsest first: the largest h (levels without one at the end).
     levels.sort_by(|a, b| {
         let key = |l: &LevelInfo| l.h.unwrap_or(f64::NEG_INFINITY);
@@ -225,16 +245,6 @@ pub(crate) fn analyse(layout: &Layout, cases: &[CaseSpec], refined: &Refined) ->
             dts.join(", ")
         ));
     }
-    let case = cases
-        .first()
-        .map(|c| {
-            c.args
-                .iter()
-                .filter(|a| !a.starts_with(&format!("--{}=", refined.name())))
-                .cloned()
-                .collect()
-        })
-        .unwrap_or_default();
     Study {
         refined: refined.name().to_string(),
         spacing: refined.spacing().to_string(),

@@ -12,9 +12,15 @@
 //! outputs are `DIR/convergence.json` and `DIR/convergence.md` (written atomically), and the
 //! table on stdout; `platefall converge collect DIR` recomputes them from the finished levels.
 //!
-//! Files: `study` (the request checked, and the plan it writes), `analysis` (the levels' summaries to
-//! the study), `table` (the Markdown table).
+//! With `--ensembles DIR1,DIR2,DIR3` the levels are ensembles already pooled by `platefall
+//! ensemble` (one directory per value of the refined option): each level's value and 95 %
+//! half-width are the ensemble's pooled mean and half-width, and nothing runs.
+//!
+//! Files: `study` (the request checked, and the plan it writes), `ensembles` (ensemble
+//! directories as levels), `analysis` (the levels' summaries to the study), `table` (the
+//! Markdown table).
 mod analysis;
+mod ensembles;
 mod study;
 mod table;
 
@@ -47,6 +53,15 @@ pub(crate) enum ConvergeRequest {
         /// The case and its options, as on its own command line.
         case: Vec<String>,
     },
+    /// A study of ensembles already pooled, one directory per level.
+    Ensembles {
+        /// `OPTION=V1,V2,V3`: the refined option and its values.
+        refine: String,
+        /// The ensembles' directories, in the order of the values.
+        dirs: Vec<PathBuf>,
+        /// Where the study is written.
+        output: PathBuf,
+    },
     /// Rewrite the study of a directory's finished levels.
     Collect {
         /// The study's directory.
@@ -70,6 +85,11 @@ pub(crate) fn main(request: &ConvergeRequest, commands: &dyn CaseCommands) -> Ex
 fn dispatch(request: &ConvergeRequest, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
     let (refine, output, jobs, threads, progress, case) = match request {
         ConvergeRequest::Collect { dir } => return collect(dir, commands),
+        ConvergeRequest::Ensembles {
+            refine,
+            dirs,
+            output,
+        } => return of_ensembles(refine, dirs, output),
         ConvergeRequest::Run {
             refine,
             output,
@@ -90,7 +110,7 @@ fn dispatch(request: &ConvergeRequest, commands: &dyn CaseCommands) -> Result<Ex
     if code == Exit::Interrupted {
         return Ok(code);
     }
-    let written = write_study(&layout, &cases, &study.refined)?;
+    let written = write_levels(&layout, &cases, &study.refined)?;
     Ok(if code != Exit::Completed {
         code
     } else {
@@ -111,13 +131,37 @@ fn collect(dir: &Path, commands: &dyn CaseCommands) -> Result<Exit, Failure> {
             )))
         }
     };
-    write_study(&layout, &manifest.cases, &refined)
+    write_levels(&layout, &manifest.cases, &refined)
+}
+
+/// `--ensembles`: the study of ensembles already pooled, one per level.
+fn of_ensembles(refine: &str, dirs: &[PathBuf], output: &Path) -> Result<Exit, Failure> {
+    let (refined, values) = study::refine_values(refine)?;
+    let levels = ensembles::ensemble_levels(&refined, &values, dirs)?;
+    let shown: Vec<String> = dirs
+        .iter()
+        .map(|d| d.to_string_lossy().into_owned())
+        .collect();
+    let case = vec![
+        "converge".to_string(),
+        format!("--refine={refine}"),
+        format!("--ensembles={}", shown.join(",")),
+    ];
+    std::fs::create_dir_all(output)
+        .map_err(|e| Failure::input(format!("cannot create {}: {e}", output.display())))?;
+    let study = analysis::analyse_levels(levels, &refined, case);
+    write_study(&Layout::new(output), study)
 }
 
 /// Analyses the levels, writes `convergence.json` and `convergence.md`, prints the table;
 /// completed, or diverged (3) when fewer than three levels completed or some did not complete.
-fn write_study(layout: &Layout, cases: &[CaseSpec], refined: &Refined) -> Result<Exit, Failure> {
-    let study = analysis::analyse(layout, cases, refined);
+fn write_levels(layout: &Layout, cases: &[CaseSpec], refined: &Refined) -> Result<Exit, Failure> {
+    write_study(layout, analysis::analyse(layout, cases, refined))
+}
+
+/// Writes `study` as `convergence.json` and `convergence.md` and prints the table; completed,
+/// or diverged (3) when fewer than three levels completed or some did not complete.
+fn write_study(layout: &Layout, study: analysis::Study) -> Result<Exit, Failure> {
     let json = serde_json::to_string_pretty(&study).map_err(|e| Failure::output(e.to_string()))?;
     let md = table::markdown(&study);
     let out = |name: &str, bytes: &[u8]| -> Result<(), Failure> {

@@ -63,7 +63,7 @@ pub(crate) struct Study {
 
 /// `--refine NAME=V1,V2,...`: the option and its values as written (numbers, at least three,
 /// distinct, positive; whole for the resolution).
-fn refine_values(spec: &str) -> Result<(Refined, Vec<String>), PlanError> {
+pub(crate) fn refine_values(spec: &str) -> Result<(Refined, Vec<String>), PlanError> {
     let (name, list) = spec.split_once('=').ok_or_else(|| {
         plan_err!("--refine {spec}: expected OPTION=V1,V2,V3, e.g. resolution=32,64,128")
     })?;
