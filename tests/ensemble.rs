@@ -3,7 +3,7 @@
 //! perturbations, their means are pooled into `ensemble.json`, the same command goes on with
 //! only the missing members (reproducibly: a member run again is byte for byte the same), and
 //! bad requests are refused with one line and exit code 2 before anything runs; `ensemble.rrd`
-//! overlays every member.
+//! overlays every member and `histograms.png` draws their means.
 mod checkpoint_common;
 mod record_common;
 
@@ -73,6 +73,24 @@ fn assert_overlaid(rrd: &Path, ids: &[&str]) {
     assert!(d.statics.contains(&"/table".to_string()));
 }
 
+/// `histograms.png` is a 1280 × 720 picture and `histograms.svg` draws the members' means of
+/// dθ/dt, V and γ.
+fn assert_histograms(dir: &Path, members: usize) {
+    let png = read(dir, "ens/histograms.png");
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let be = |b: &[u8]| u32::from_be_bytes([b[0], b[1], b[2], b[3]]);
+    assert_eq!((be(&png[16..20]), be(&png[20..24])), (1280, 720));
+    let svg = String::from_utf8(read(dir, "ens/histograms.svg")).unwrap();
+    assert!(svg.contains(&format!("The means of {members} members")));
+    for label in [
+        "mean dθ/dt (rad per c/U)",
+        "mean speed V (U)",
+        "mean flight-path angle γ (rad)",
+    ] {
+        assert!(svg.contains(label), "{label} missing from histograms.svg");
+    }
+}
+
 #[test]
 fn members_branch_are_pooled_and_resume() {
     let dir = scratch("ensemble");
@@ -118,6 +136,7 @@ fn members_branch_are_pooled_and_resume() {
     assert_eq!(body(&m0)[..spin_rows.len()], spin_rows[..]);
     assert!(body(&m0).len() > spin_rows.len() + 100);
     assert_overlaid(&dir.join("ens/ensemble.rrd"), &["m000", "m001", "m002"]);
+    assert_histograms(&dir, 3);
     // The same command again runs nothing; with one member gone (as if it never ran), it runs
     // that one alone, byte for byte as before (its perturbation comes from the seed).
     let summaries = read(&dir, "ens/cases/m002/summary.json");

@@ -25,6 +25,7 @@ pub(crate) mod converge;
 mod diagram;
 pub(crate) mod ensemble;
 mod failure;
+mod figure;
 mod json;
 mod layout;
 mod options;

@@ -6,14 +6,13 @@
 //! - One swept option: the chosen value against the option, each case's marker coloured by its
 //!   regime (for static plates: the mean C_L and C_D on the left, the value on the right).
 //!
-//! Text is rendered with the DejaVu Sans font compiled into the binary, so no system font
-//! library is needed.
+//! Font, file writing and errors are [`super::figure`]'s.
 use plotters::coord::types::RangedCoordf64;
-use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
-use super::failure::{write_output, Failure};
+use super::failure::Failure;
+use super::figure::{err, write_figure, Area, DrawError, Figure, FONT};
 use super::layout::Layout;
 use platefall_core::param::rounded as short_number;
 use platefall_post::phase::{
@@ -24,65 +23,26 @@ use platefall_post::regime::Regime;
 
 /// Figure size in pixels.
 const SIZE: (u32, u32) = (1280, 560);
-const FONT: &str = "sans-serif";
 
 fn rgb(c: Rgb) -> RGBColor {
     RGBColor(c.0, c.1, c.2)
 }
 
-/// Registers the embedded font once (plotters' ab_glyph text needs it).
-fn register_font() {
-    static ONCE: std::sync::Once = std::sync::Once::new();
-    ONCE.call_once(|| {
-        let _ = plotters::style::register_font(FONT, FontStyle::Normal, dejavu::sans::regular());
-    });
-}
-
 /// Writes `phase.svg` and `phase.png` (each atomically).
 pub(crate) fn write_figures(layout: &Layout, data: &DiagramData) -> Result<(), Failure> {
-    register_font();
-    let fail = |e: DrawError| Failure::output(format!("drawing the phase diagram: {}", e.0));
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, SIZE).into_drawing_area();
-        draw(&root, data).map_err(fail)?;
-    }
-    write_output(&layout.output("phase.svg"), svg.as_bytes())?;
-    let mut pixels = vec![0u8; (SIZE.0 * SIZE.1 * 3) as usize];
-    {
-        let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
-        draw(&root, data).map_err(fail)?;
-    }
-    let png = encode_png(&pixels, SIZE).map_err(fail)?;
-    write_output(&layout.output("phase.png"), &png)
+    write_figure(layout, "phase", "the phase diagram", &PhaseDiagram(data))
 }
 
-/// RGB pixels as a PNG file.
-fn encode_png(pixels: &[u8], (w, h): (u32, u32)) -> Result<Vec<u8>, DrawError> {
-    let mut out = Vec::new();
-    let mut enc = png::Encoder::new(&mut out, w, h);
-    enc.set_color(png::ColorType::Rgb);
-    enc.set_depth(png::BitDepth::Eight);
-    let mut writer = enc.write_header().map_err(err)?;
-    writer.write_image_data(pixels).map_err(err)?;
-    writer.finish().map_err(err)?;
-    Ok(out)
-}
+/// The phase diagram of a sweep's cases.
+struct PhaseDiagram<'a>(&'a DiagramData);
 
-type Area<'a, DB> = DrawingArea<DB, Shift>;
-
-/// Why the figure could not be drawn (plotters' error, as text).
-#[derive(Debug)]
-struct DrawError(String);
-
-impl From<&str> for DrawError {
-    fn from(s: &str) -> Self {
-        DrawError(s.to_string())
+impl Figure for PhaseDiagram<'_> {
+    fn size(&self) -> (u32, u32) {
+        SIZE
     }
-}
-
-fn err<E: std::fmt::Debug>(e: E) -> DrawError {
-    DrawError(format!("{e:?}"))
+    fn draw<DB: DrawingBackend>(&self, root: &Area<DB>) -> Result<(), DrawError> {
+        draw(root, self.0)
+    }
 }
 
 /// The whole figure: a title over the panels (see the module docs).

@@ -18,12 +18,15 @@
 //!   noise (Welch's t).
 //! - **Planning** ([`plan`]): the members, or a single run's length, needed for a requested
 //!   half-width, from a pilot's measured spread or interval.
+//! - **Distribution** ([`histogram`]): the members' means binned by Sturges' rule.
+pub mod histogram;
 pub mod independence;
 pub mod plan;
 pub mod pool;
 pub mod separation;
 pub mod trace;
 
+pub use histogram::Histogram;
 pub use independence::{decorrelation, Decorrelation};
 pub use plan::{members_for, single_run_length, MemberPlan};
 pub use pool::{

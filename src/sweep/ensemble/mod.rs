@@ -8,13 +8,16 @@
 //!
 //! The directory is a sweep's (`cases/<id>/summary.json`, `run.csv`, `results.csv`, the
 //! members' regimes along their perturbation in `phase.png`) plus `ensemble.json`,
-//! `ensemble.md` and `ensemble.rrd` (every member overlaid, for the viewer). Members whose summaries are complete are not run again: the same command
-//! goes on with only the missing ones.
+//! `ensemble.md`, `histograms.png` (the members' means, under the pooled mean and interval) and
+//! `ensemble.rrd` (every member overlaid, for the viewer). Members whose summaries are complete
+//! are not run again: the same command goes on with only the missing ones.
 //!
-//! Files, each using only those after it: `run` (the command), `pooled` (the members'
+//! Files, each using only those after it: `run` (the command), `histograms` (the figure of
+//! the pooled quantities), `pooled` (the members'
 //! summaries pooled, and the table), `parting` (their decorrelation from their CSVs), `traces`
 //! (the CSVs' columns read back), `members` (the request checked against the checkpoint, and
 //! each member's command line).
+mod histograms;
 mod members;
 mod parting;
 mod pooled;

@@ -62,7 +62,7 @@ pub(crate) fn pool_keys(summaries: &[Value]) -> BTreeMap<String, Quantity> {
 }
 
 /// A value with its half-width to two significant digits of the half-width.
-fn shown(value: f64, hw: f64) -> String {
+pub(crate) fn shown(value: f64, hw: f64) -> String {
     if !(hw.is_finite() && hw > 0.0) {
         return format!("{value:.4} ± {hw:.2}");
     }

@@ -8,6 +8,7 @@ use std::path::Path;
 use serde::Serialize;
 use serde_json::Value as Json;
 
+use super::histograms::write_histograms;
 use super::members::{branch_of, case_of, members, Branch, EnsembleSpec, Member};
 use super::parting::{parting, Parting};
 use super::pooled::{pool_keys, table, Quantity};
@@ -154,6 +155,7 @@ fn write_pooled(
     let md = markdown(&pooled);
     write_output(&layout.output("ensemble.json"), (json + "\n").as_bytes())?;
     write_output(&layout.output("ensemble.md"), md.as_bytes())?;
+    let histograms = write_histograms(layout, &pooled.quantities)?;
     let traces: Vec<_> = done
         .iter()
         .filter_map(|(c, _)| trace(&c.id, &layout.csv(&c.id), branch.t))
@@ -163,8 +165,9 @@ fn write_pooled(
         .map_err(|e| Failure::output(e.to_string()))?;
     println!("{md}");
     println!(
-        "ensemble: {}/ensemble.md, ensemble.json{}",
+        "ensemble: {}/ensemble.md, ensemble.json{}{}",
         layout.dir.display(),
+        if histograms { ", histograms.png" } else { "" },
         if rrd.is_some() { ", ensemble.rrd" } else { "" }
     );
     Ok(
