@@ -12,7 +12,7 @@ use super::layout::Layout;
 /// The font family every figure's text uses (the embedded DejaVu Sans).
 pub(crate) const FONT: &str = "sans-serif";
 
-pub(crate) type Area<'a, DB> = DrawingArea<DB, Shift>;
+pub(crate) type Area<DB> = DrawingArea<DB, Shift>;
 
 /// Why a figure could not be drawn (plotters' error, as text).
 #[derive(Debug)]
@@ -26,6 +26,22 @@ impl From<&str> for DrawError {
 
 pub(crate) fn err<E: std::fmt::Debug>(e: E) -> DrawError {
     DrawError(format!("{e:?}"))
+}
+
+/// Fills `root` white, writes `title` across its top and returns the area below it.
+pub(crate) fn titled<DB: DrawingBackend>(
+    root: &Area<DB>,
+    title: &str,
+) -> Result<Area<DB>, DrawError> {
+    root.fill(&WHITE).map_err(err)?;
+    let (top, body) = root.split_vertically(44);
+    top.draw(&Text::new(
+        title.to_string(),
+        (20, 12),
+        (FONT, 22).into_font().color(&BLACK),
+    ))
+    .map_err(err)?;
+    Ok(body)
 }
 
 /// A figure that can draw itself on any plotters backend.

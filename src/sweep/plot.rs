@@ -12,7 +12,7 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::failure::Failure;
-use super::figure::{err, write_figure, Area, DrawError, Figure, FONT};
+use super::figure::{err, titled, write_figure, Area, DrawError, Figure, FONT};
 use super::layout::Layout;
 use platefall_core::param::rounded as short_number;
 use platefall_post::phase::{
@@ -47,14 +47,7 @@ impl Figure for PhaseDiagram<'_> {
 
 /// The whole figure: a title over the panels (see the module docs).
 fn draw<DB: DrawingBackend>(root: &Area<DB>, data: &DiagramData) -> Result<(), DrawError> {
-    root.fill(&WHITE).map_err(err)?;
-    let (top, body) = root.split_vertically(44);
-    top.draw(&Text::new(
-        data.title.clone(),
-        (20, 12),
-        (FONT, 22).into_font().color(&BLACK),
-    ))
-    .map_err(err)?;
+    let body = titled(root, &data.title)?;
     match (data.y.is_some(), data.is_static()) {
         (false, false) => regime_curve_panel(&body, data)?,
         (two_axes, is_static) => {

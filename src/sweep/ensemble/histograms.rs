@@ -6,9 +6,9 @@ use std::collections::BTreeMap;
 
 use plotters::prelude::*;
 
-use super::pooled::{shown, Quantity};
+use super::pooled::{relative_percent, shown, Quantity};
 use crate::sweep::failure::Failure;
-use crate::sweep::figure::{err, write_figure, Area, DrawError, Figure, FONT};
+use crate::sweep::figure::{err, titled, write_figure, Area, DrawError, Figure, FONT};
 use crate::sweep::layout::Layout;
 use platefall_post::ensemble::Histogram;
 
@@ -26,10 +26,11 @@ const PANELS: [(&str, &str); 6] = [
 const COLUMNS: usize = 3;
 const SIZE: (u32, u32) = (1280, 720);
 
-/// Writes the histograms of the pooled quantities; nothing when no quantity of [`PANELS`] was
-/// pooled.
+/// Writes the histograms of the quantities pooled from `members` completed members; nothing
+/// when no quantity of [`PANELS`] was pooled.
 pub(crate) fn write_histograms(
     layout: &Layout,
+    members: usize,
     quantities: &BTreeMap<String, Quantity>,
 ) -> Result<bool, Failure> {
     let panels: Vec<(&str, &Quantity)> = PANELS
@@ -39,13 +40,15 @@ pub(crate) fn write_histograms(
     if panels.is_empty() {
         return Ok(false);
     }
-    let figure = Histograms { panels };
+    let figure = Histograms { members, panels };
     write_figure(layout, "histograms", "the members' histograms", &figure)?;
     Ok(true)
 }
 
 /// One panel per drawn quantity: its label and its pooled interval with the members' means.
 struct Histograms<'a> {
+    /// The completed members pooled.
+    members: usize,
     panels: Vec<(&'a str, &'a Quantity)>,
 }
 
@@ -54,18 +57,11 @@ impl Figure for Histograms<'_> {
         SIZE
     }
     fn draw<DB: DrawingBackend>(&self, root: &Area<DB>) -> Result<(), DrawError> {
-        root.fill(&WHITE).map_err(err)?;
-        let (top, body) = root.split_vertically(44);
-        let members = self.panels[0].1.member_means.len();
         let title = format!(
-            "The means of {members} members: the pooled mean (red) and its 95 % interval (band)"
+            "The means of {} members: the pooled mean (red) and its 95 % interval (band)",
+            self.members
         );
-        top.draw(&Text::new(
-            title,
-            (20, 12),
-            (FONT, 22).into_font().color(&BLACK),
-        ))
-        .map_err(err)?;
+        let body = titled(root, &title)?;
         let rows = self.panels.len().div_ceil(COLUMNS);
         let cells = body.split_evenly((rows, COLUMNS));
         for (cell, (label, q)) in cells.iter().zip(&self.panels) {
@@ -91,11 +87,7 @@ fn panel<DB: DrawingBackend>(area: &Area<DB>, label: &str, q: &Quantity) -> Resu
     let most = hist.counts.iter().copied().max().unwrap_or(1);
     let top = most as f64 + 1.0;
     let digits = tick_digits(hi - lo);
-    let relative = if e.mean != 0.0 {
-        format!(" (±{:.2} %)", 100.0 * e.half_width / e.mean.abs())
-    } else {
-        String::new()
-    };
+    let relative = relative_percent(e).map_or(String::new(), |r| format!(" (±{r:.2} %)"));
     let caption = format!("{}{relative}", shown(e.mean, e.half_width));
     let mut chart = ChartBuilder::on(area)
         .caption(caption, (FONT, 16))

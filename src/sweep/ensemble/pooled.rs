@@ -61,6 +61,11 @@ pub(crate) fn pool_keys(summaries: &[Value]) -> BTreeMap<String, Quantity> {
         .collect()
 }
 
+/// The half-width as a percentage of the mean's size; None for a mean of zero.
+pub(crate) fn relative_percent(e: &EnsembleInterval) -> Option<f64> {
+    (e.mean != 0.0).then(|| 100.0 * e.half_width / e.mean.abs())
+}
+
 /// A value with its half-width to two significant digits of the half-width.
 pub(crate) fn shown(value: f64, hw: f64) -> String {
     if !(hw.is_finite() && hw > 0.0) {
@@ -78,11 +83,7 @@ pub(crate) fn table(quantities: &BTreeMap<String, Quantity>) -> String {
     );
     for (key, q) in quantities {
         let e = &q.interval;
-        let rel = if e.mean != 0.0 {
-            format!("{:.2} %", 100.0 * e.half_width / e.mean.abs())
-        } else {
-            "-".into()
-        };
+        let rel = relative_percent(e).map_or("-".into(), |r| format!("{r:.2} %"));
         let combined = e
             .combined
             .map_or("-".into(), |c| shown(e.mean, c.half_width));

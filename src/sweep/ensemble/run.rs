@@ -155,7 +155,7 @@ fn write_pooled(
     let md = markdown(&pooled);
     write_output(&layout.output("ensemble.json"), (json + "\n").as_bytes())?;
     write_output(&layout.output("ensemble.md"), md.as_bytes())?;
-    let histograms = write_histograms(layout, &pooled.quantities)?;
+    let histograms = write_histograms(layout, pooled.completed.len(), &pooled.quantities)?;
     let traces: Vec<_> = done
         .iter()
         .filter_map(|(c, _)| trace(&c.id, &layout.csv(&c.id), branch.t))
