@@ -88,6 +88,7 @@ pub(crate) fn bench_grid(resolution: usize, span: Span) -> Result<Grid3, Flow3Er
         extent: [EXTENT; 3],
         stretch: Stretch3::GrowthCap(GROWTH),
         memory_limit: MEMORY_LIMIT,
+        shape: Default::default(),
     })
 }
 

@@ -56,6 +56,12 @@ pub fn run_case(cmd: &Command) -> anyhow::Result<Exit> {
     if let Some(span) = cmd.case_args().and_then(|(solver, _)| solver.span) {
         return super::span_run::run_span(cmd, span);
     }
+    if let Some((solver, _)) = cmd.case_args().filter(|(s, _)| s.section.needs_span()) {
+        anyhow::bail!(
+            "--shape {} is a body in three dimensions: give --span (e.g. --span 1)",
+            solver.section.shape.name()
+        );
+    }
     let mut p = prepare(cmd)?;
     let Some((solver, _)) = cmd.case_args() else {
         anyhow::bail!("not a case subcommand");

@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 use platefall_core::config::defaults;
+use platefall_core::flow3d::Shape3;
 use platefall_core::shape::{NacaCode, NotNaca, Shape};
 
 use super::flags::ArgError;
@@ -15,6 +16,9 @@ pub struct ShapeArgs {
     /// The section: `rect` (sharp corners), `rounded` (corners rounded to --edge-radius),
     /// `ellipse` (axes c and --thickness), `circle` (diameter c), `nacaMPTT` (a NACA four-digit
     /// section of its own thickness, e.g. naca0012), or `polygon` (the vertices in --polygon).
+    /// With --span, rect is the rectangular plate and ellipse and circle their cylinders along
+    /// the span; three bodies need --span: `sphere` (diameter c, --span 1), `ellipsoid` (axes c,
+    /// --thickness and the span) and `disk` (diameter c across the span, --thickness thick).
     #[arg(long, default_value = "rect", value_parser = parse_kind)]
     pub shape: ShapeKind,
     /// Plate thickness t/c, exact, in (0, 1] [default: 1/64 = 0.015625 for rect, rounded and
@@ -39,6 +43,22 @@ pub enum ShapeKind {
     Circle,
     Naca(NacaCode),
     Polygon,
+    Sphere,
+    Ellipsoid,
+    Disk,
+}
+
+impl ShapeKind {
+    /// The name `--shape` takes for the 3-D bodies (sphere, ellipsoid, disk); `section` for the
+    /// rest.
+    pub(crate) fn name(&self) -> &'static str {
+        match self {
+            ShapeKind::Sphere => "sphere",
+            ShapeKind::Ellipsoid => "ellipsoid",
+            ShapeKind::Disk => "disk",
+            _ => "section",
+        }
+    }
 }
 
 /// A `--shape` value that names no section.
@@ -50,7 +70,7 @@ pub enum ShapeNameError {
     /// Any other unknown name.
     #[error(
         "`{0}` is not a shape: accepted rect, rounded, ellipse, circle, nacaMPTT (e.g. \
-         naca0012), polygon"
+         naca0012), polygon, and with --span sphere, ellipsoid, disk"
     )]
     Unknown(String),
 }
@@ -63,6 +83,9 @@ fn parse_kind(s: &str) -> Result<ShapeKind, ShapeNameError> {
         "ellipse" => Ok(ShapeKind::Ellipse),
         "circle" => Ok(ShapeKind::Circle),
         "polygon" => Ok(ShapeKind::Polygon),
+        "sphere" => Ok(ShapeKind::Sphere),
+        "ellipsoid" => Ok(ShapeKind::Ellipsoid),
+        "disk" => Ok(ShapeKind::Disk),
         other if other.to_ascii_lowercase().starts_with("naca") => {
             Ok(ShapeKind::Naca(NacaCode::parse(other)?))
         }
@@ -86,12 +109,12 @@ impl ShapeArgs {
         }
         let own_thickness = matches!(
             self.shape,
-            ShapeKind::Naca(_) | ShapeKind::Polygon | ShapeKind::Circle
+            ShapeKind::Naca(_) | ShapeKind::Polygon | ShapeKind::Circle | ShapeKind::Sphere
         );
         if own_thickness && self.thickness.is_some() {
             return Err(refuse(
                 "--thickness",
-                "does not go with --shape circle, nacaMPTT or polygon (they have their own)",
+                "does not go with --shape circle, sphere, nacaMPTT or polygon (they have their own)",
             ));
         }
         let shape = match &self.shape {
@@ -101,7 +124,10 @@ impl ShapeArgs {
                 radius: self.edge_radius.unwrap_or(0.5 * t),
             },
             ShapeKind::Ellipse => Shape::Ellipse { thickness: t },
-            ShapeKind::Circle => Shape::Ellipse { thickness: 1.0 },
+            ShapeKind::Circle | ShapeKind::Sphere => Shape::Ellipse { thickness: 1.0 },
+            // The bodies' sections at mid-span.
+            ShapeKind::Ellipsoid => Shape::Ellipse { thickness: t },
+            ShapeKind::Disk => Shape::Rect { thickness: t },
             ShapeKind::Naca(code) => Shape::Naca { code: *code },
             ShapeKind::Polygon => Shape::Polygon {
                 points: read_polygon(self.polygon.as_deref().unwrap_or(Path::new("")))?,
@@ -109,6 +135,28 @@ impl ShapeArgs {
         };
         shape.validate().map_err(|e| ArgError::Input(e.into()))?;
         Ok(shape)
+    }
+}
+
+impl ShapeArgs {
+    /// Whether the shape is a body of three dimensions only (it needs --span).
+    pub(crate) fn needs_span(&self) -> bool {
+        matches!(
+            self.shape,
+            ShapeKind::Sphere | ShapeKind::Ellipsoid | ShapeKind::Disk
+        )
+    }
+
+    /// The body in the 3-D grid (docs/three-d.md "Bodies"), inscribed in the box of chord,
+    /// thickness and span; None for the sections 3-D runs do not take.
+    pub(crate) fn body3(&self) -> Option<Shape3> {
+        match self.shape {
+            ShapeKind::Rect => Some(Shape3::Box),
+            ShapeKind::Ellipse | ShapeKind::Circle => Some(Shape3::SpanCylinder),
+            ShapeKind::Sphere | ShapeKind::Ellipsoid => Some(Shape3::Ellipsoid),
+            ShapeKind::Disk => Some(Shape3::Disk),
+            ShapeKind::Rounded | ShapeKind::Naca(_) | ShapeKind::Polygon => None,
+        }
     }
 }
 

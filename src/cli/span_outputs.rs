@@ -22,6 +22,8 @@ pub(super) struct Outputs {
     pub(super) lateral: History,
     pub(super) attitude: Vec<Attitude>,
     pub(super) cells: usize,
+    /// The recirculation length behind a static body at the end (flow3d `wake.rs`).
+    pub(super) recirculation_length: Option<f64>,
     /// The 3-D recording, if the run has one.
     pub(super) recording: Option<Recording>,
     /// Progress on stderr (simulated time, steps per second, the time left).
@@ -45,6 +47,7 @@ impl Outputs {
             lateral: History::default(),
             attitude: Vec::new(),
             cells,
+            recirculation_length: None,
             recording: None,
             progress: None,
         })
@@ -67,6 +70,7 @@ impl Outputs {
             lateral: state.lateral.clone(),
             attitude: state.attitude.clone(),
             cells,
+            recirculation_length: None,
             recording: None,
             progress: None,
         })

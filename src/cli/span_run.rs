@@ -38,8 +38,12 @@ fn unavailable(cmd: &Command) -> Option<&'static str> {
     let given = [
         (matches!(cmd, Command::Pinned(_)), "pinned --span"),
         (
-            solver.section.shape != ShapeKind::Rect,
-            "--shape other than rect",
+            solver.section.body3().is_none(),
+            "--shape rounded, nacaMPTT or polygon",
+        ),
+        (
+            matches!(cmd, Command::Free(_)) && solver.section.shape != ShapeKind::Rect,
+            "free --span with --shape other than rect",
         ),
         (solver.seed_grid, "--seed-grid"),
     ];
@@ -117,9 +121,25 @@ pub(super) fn span_of<'a>(
     span: Span,
 ) -> anyhow::Result<(Run3<'a>, usize)> {
     let (limit, _) = memory_limit(&solver.limits.max_memory)?;
-    let run = Run3::new(config, span, solver.extent(), solver.growth(), limit);
+    let mut run = Run3::new(config, span, solver.extent(), solver.growth(), limit);
+    run.grid.shape = solver.section.body3().unwrap_or_default();
+    if solver.section.shape == ShapeKind::Sphere && span != Span::Finite(1.0) {
+        anyhow::bail!(
+            "--shape sphere is one chord across: give --span 1, not {} (--shape ellipsoid for \
+             other spans)",
+            span_text(span)
+        );
+    }
     let cells = Grid3::new(&run.grid)?.cells();
     Ok((run, cells))
+}
+
+/// A span as the command line writes it.
+fn span_text(span: Span) -> String {
+    match span {
+        Span::Finite(b) => format!("{b}"),
+        Span::Periodic(b) => format!("periodic:{b}"),
+    }
 }
 
 /// The checkpoints of a new 3-D run: the file (`--checkpoint`, else beside the CSV or the
@@ -199,6 +219,7 @@ pub(super) fn go(mut s: SpanStart, interrupts: &Interrupts) -> anyhow::Result<Ex
         mover.set_phase_marker(phases.marker());
         let (steps_before, started) = (mover.steps(), Instant::now());
         let stopped = mover.run(run, out, &mut ctl)?;
+        out.recirculation_length = mover.recirculation_length(run);
         let wall = started.elapsed().as_secs_f64();
         let steps = mover.steps() - steps_before;
         if let Some(line) = cost_line(phases.seconds(), wall, steps, cells) {
@@ -256,7 +277,7 @@ fn finish(
         samples: out.planar,
         t_release: run.config.case.release_time(),
         cells: out.cells,
-        recirculation_length: None,
+        recirculation_length: out.recirculation_length,
     };
     let mut sum = summarize3(
         run.config,
@@ -266,6 +287,7 @@ fn finish(
         ended.wall_seconds,
     );
     sum.three.span = Some(run.grid.span);
+    sum.three.shape = Some(run.grid.shape);
     sum.three.cells_3d = out.cells;
     let text = super::provenance::with_version(&report3(run.config, &sum), invocation);
     let mut failures = Vec::new();

@@ -9,7 +9,7 @@ use super::checkpointer::Checkpointer;
 use super::span_outputs::{Outputs, Stop};
 use platefall_core::body::six::Plate6;
 use platefall_core::flow3d::{FlowSolver3, PhaseMarker};
-use platefall_core::sim::turns_done;
+use platefall_core::sim::{turns_done, Case};
 use platefall_core::sim3::{unwrapped_pitch, Flight3, Run3, Sample3, Sample6};
 use platefall_post::summary3::Attitude;
 use platefall_record::checkpoint::{RunState, SpanRun, SpanState};
@@ -52,6 +52,17 @@ impl Mover {
             _ => return Err(Stop::Checkpoint("the checkpoint is of another case".into())),
         }
         Ok(mover)
+    }
+
+    /// The recirculation length behind a static body at the current level (None for the other
+    /// cases: the bubble of a turning body is not steady).
+    pub(super) fn recirculation_length(&self, run: &Run3) -> Option<f64> {
+        match self {
+            Mover::Flow(f) if matches!(run.config.case, Case::Static { .. }) => {
+                f.recirculation_length()
+            }
+            _ => None,
+        }
     }
 
     /// Steps taken so far.

@@ -66,6 +66,7 @@ fn three_d(n: usize, t_end: f64) -> Result<(Path, usize), Box<dyn std::error::Er
         extent: [EXTENT; 3],
         stretch: Stretch3::GrowthCap(GROWTH),
         memory_limit: 8e9,
+        shape: Default::default(),
     })?;
     let cells = grid.cells();
     let params = FlowParams3 {

@@ -80,6 +80,7 @@ fn flow_steps_allocate_nothing() {
             extent: [1.5; 3],
             stretch: Stretch3::GrowthCap(1.2),
             memory_limit: 1e9,
+            shape: Default::default(),
         };
         let grid = Grid3::new(&spec).unwrap();
         assert!(grid.cells() > 16_384, "{} cells", grid.cells());

@@ -23,6 +23,7 @@ fn flow(n: usize, span: Span, extent: f64, state: &State6) -> FlowSolver3 {
         extent: [extent; 3],
         stretch: Stretch3::GrowthCap(1.2),
         memory_limit: 4e9,
+        shape: Default::default(),
     })
     .expect("grid");
     let params = FlowParams3 {

@@ -20,6 +20,7 @@ fn spec(n: usize, span: Span, stretch: Stretch3) -> GridSpec3 {
         extent: [0.75; 3],
         stretch,
         memory_limit: 1e9,
+        shape: Default::default(),
     }
 }
 

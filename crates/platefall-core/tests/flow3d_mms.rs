@@ -69,6 +69,7 @@ fn solver(n: usize) -> FlowSolver3 {
         extent: [0.5; 3],
         stretch: Stretch3::Intervals([n / 4; 3]),
         memory_limit: 1e9,
+        shape: Default::default(),
     };
     let grid = Grid3::new(&spec).expect("grid").without_plate();
     let params = FlowParams3 {

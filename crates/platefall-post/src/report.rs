@@ -42,14 +42,30 @@ fn row(quantity: &str, this_run: String, reference: &str) -> Row {
 
 /// The end-of-run report: the run's figures and the docs/physics.md §8 comparison for its case.
 pub fn report(config: &RunConfig, sum: &Summary) -> String {
-    let mut r = header(config, sum);
-    let table = match config.case {
-        Case::Static { alpha, .. } => static_part(alpha, sum, &mut r),
-        Case::Forced { omega, .. } => forced_part(omega, sum, &mut r),
-        Case::Pinned { .. } | Case::Free { .. } => coupled_part(&config.case, sum, &mut r),
-    };
-    r.push_str(&comparison_table(&table));
+    let mut r = report_figures(config, sum);
+    r.push_str(&comparison(config, sum));
     r
+}
+
+/// The report's figures without the comparison with the dissertation.
+pub fn report_figures(config: &RunConfig, sum: &Summary) -> String {
+    let mut r = header(config, sum);
+    case_part(config, sum, &mut r);
+    r
+}
+
+/// The docs/physics.md §8 comparison of the run's case (a plate's).
+pub fn comparison(config: &RunConfig, sum: &Summary) -> String {
+    comparison_table(&case_part(config, sum, &mut String::new()))
+}
+
+/// The case's own lines (into `r`) and its comparison rows.
+fn case_part(config: &RunConfig, sum: &Summary, r: &mut String) -> Vec<Row> {
+    match config.case {
+        Case::Static { alpha, .. } => static_part(alpha, sum, r),
+        Case::Forced { omega, .. } => forced_part(omega, sum, r),
+        Case::Pinned { .. } | Case::Free { .. } => coupled_part(&config.case, sum, r),
+    }
 }
 
 /// Title, status, cost, developed window and the coefficient means.

@@ -5,9 +5,9 @@
 use serde::Serialize;
 
 use super::intervals::intervals_of;
-use super::report::{pm, report};
+use super::report::{comparison, pm, report_figures};
 use super::summary::{motion_of, summarize, Summary};
-use platefall_core::flow3d::Span;
+use platefall_core::flow3d::{Shape3, Span};
 use platefall_core::sim::{History, Quantity, RunConfig, RunRecord, StepSample};
 
 /// One step of a flight's attitude, beyond the planar sample.
@@ -32,6 +32,8 @@ pub struct Attitude {
 pub struct Keys3 {
     /// The plate's span (chords), finite or periodic.
     pub span: Option<Span>,
+    /// The body inscribed in the box of chord, thickness and span (docs/three-d.md "Bodies").
+    pub shape: Option<Shape3>,
     /// Cells of the 3-D grid.
     pub cells_3d: usize,
     /// Mean side-force coefficient over the developed window.
@@ -154,7 +156,17 @@ fn flight_keys(k: &mut Keys3, rows: &[Attitude], t_release: f64, (t0, t1): (f64,
 /// The end-of-run text of a 3-D run: the 2-D report of its projection and the 3-D keys.
 pub fn report3(config: &RunConfig, sum: &Summary3) -> String {
     let k = &sum.three;
-    let mut r = report(config, &sum.planar);
+    let mut r = report_figures(config, &sum.planar);
+    if let Some(shape) = k.shape.filter(|s| s.is_curved()) {
+        r.push_str(&format!(
+            "3-D body: {shape:?} in the box 1 × {} × {} chords; coefficients on its planform \
+             area (docs/three-d.md \"Bodies\")\n",
+            config.grid.shape.thickness(),
+            k.span.map_or(f64::NAN, |s| s.length()),
+        ));
+    } else {
+        r.push_str(&comparison(config, &sum.planar));
+    }
     r.push_str(&format!(
         "3-D ({} cells): mean C_S {}  C_l (roll) {}  C_n (yaw) {}\n",
         k.cells_3d,

@@ -74,7 +74,7 @@ mod snapshot;
 mod split_cholesky;
 mod state;
 mod transport;
-mod wake;
+pub(crate) mod wake;
 mod wall;
 mod zones;
 

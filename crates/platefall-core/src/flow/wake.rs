@@ -27,22 +27,29 @@ impl FlowSolver {
             let v = bilinear(&g.xc, &g.yn, &self.v, p) - f.gy(p[0]);
             u * e[0] + v * e[1]
         };
-        let mut prev = (step, along(step));
-        if prev.1 >= 0.0 {
-            return Some(0.0);
-        }
-        let mut s = 2.0 * step;
-        while s < reach {
-            let q = along(s);
-            if q >= 0.0 {
-                // Linear interpolation of the sign change.
-                return Some(prev.0 + (s - prev.0) * (-prev.1) / (q - prev.1));
-            }
-            prev = (s, q);
-            s += step;
-        }
-        None
+        reversed_length(step, reach, along)
     }
+}
+
+/// Where `along`, negative at `step`, first turns non-negative, sampled every `step` up to
+/// `reach` and interpolated linearly in between: the length of a reversed-flow region from its
+/// start (0 when `along(step)` is not negative; None when it stays negative).
+pub(crate) fn reversed_length(step: f64, reach: f64, along: impl Fn(f64) -> f64) -> Option<f64> {
+    let mut prev = (step, along(step));
+    if prev.1 >= 0.0 {
+        return Some(0.0);
+    }
+    let mut s = 2.0 * step;
+    while s < reach {
+        let q = along(s);
+        if q >= 0.0 {
+            // Linear interpolation of the sign change.
+            return Some(prev.0 + (s - prev.0) * (-prev.1) / (q - prev.1));
+        }
+        prev = (s, q);
+        s += step;
+    }
+    None
 }
 
 /// The largest distance along the unit vector `e` from the origin at which the ray leaves the

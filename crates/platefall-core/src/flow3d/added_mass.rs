@@ -15,7 +15,7 @@
 use super::frame::Frame3;
 use super::grid::Grid3;
 use super::layout::Layout;
-use super::loads::{plate_loads, LoadInput};
+use super::loads::LoadInput;
 use super::metrics::Metrics3;
 use super::plate::Plate;
 use super::project::{cell_fluxes, pressure_rhs, PoissonSolve, Stop};
@@ -102,12 +102,13 @@ impl UnitResponses<'_> {
     fn pressure_loads(&mut self, unit: &Frame3) -> Result<[f64; 6], Flow3Error> {
         let lay = self.layout;
         let mut vel: [Vec<f64>; 3] = std::array::from_fn(|_| lay.zeros());
-        self.plate.impose(&mut vel, self.metrics, lay, unit);
+        self.plate.hold(&mut vel, self.metrics, lay, unit);
         let op = self.pressure.operator();
         let cells = op.cells();
         let (mut rhs, mut weight, mut p) = (vec![0.0; cells], vec![0.0; cells], vec![0.0; cells]);
         let view = [&vel[0][..], &vel[1][..], &vel[2][..]];
         cell_fluxes(view, self.metrics, lay, op, &mut rhs);
+        self.plate.cut_flux(view, unit, &op.diag, &mut rhs);
         pressure_rhs(op, 1.0, &mut rhs, &mut weight);
         let stop = Stop {
             weight: &weight,
@@ -122,7 +123,7 @@ impl UnitResponses<'_> {
                 tolerance: UNIT_DIVERGENCE,
             });
         }
-        let loads = plate_loads(&LoadInput {
+        let loads = self.plate.loads(&LoadInput {
             grid: self.grid,
             m: self.metrics,
             layout: lay,

@@ -5,9 +5,11 @@
 //! F·l̂ with l̂ = ẑ × ê normalised (perpendicular to the span and to the motion: "up" for a plate
 //! moving along +x, as in 2-D) and the side force F·ŝ with ŝ = ê × l̂ (along +z when the motion
 //! is in the x–y plane). Moments stay in body axes: roll about the chord (x), yaw about the
-//! normal (y), pitch about the span (z, the 2-D C_M). All are on ½ρU²·c·b for forces and
-//! ½ρU²·c²·b for moments (c = 1, ρ = 1, U = 1), b the span, or the period of a periodic span, so
-//! that a spanwise-uniform flow gives the 2-D coefficients.
+//! normal (y), pitch about the span (z, the 2-D C_M). All are on ½ρU²·S for forces and
+//! ½ρU²·S·c for moments (c = 1, ρ = 1, U = 1), S the body's planform area (its projection on the
+//! x–z plane): c·b for the plate and the cylinder along the span, b the span or the period of a
+//! periodic span, so that a spanwise-uniform flow gives the 2-D coefficients; π c b / 4 for the
+//! ellipsoid and the disk, so that a sphere's drag is on its frontal area, as usual.
 use super::frame::Frame3;
 use super::loads::Loads3;
 
@@ -29,13 +31,13 @@ pub struct Coefficients3 {
 }
 
 impl Coefficients3 {
-    /// The coefficients of `loads` for a plate moving as `frame`, of span (or period) `span`
-    /// chords.
-    pub fn new(loads: &Loads3, frame: &Frame3, span: f64) -> Coefficients3 {
+    /// The coefficients of `loads` for a body moving as `frame`, of planform area `area`
+    /// (chords², the span for a plate).
+    pub fn new(loads: &Loads3, frame: &Frame3, area: f64) -> Coefficients3 {
         let [e, l, s] = wind_axes(frame.body_velocity());
         let f = loads.force;
         let dot = |a: [f64; 3]| a[0] * f[0] + a[1] * f[1] + a[2] * f[2];
-        let scale = 2.0 / span;
+        let scale = 2.0 / area;
         Coefficients3 {
             lift: scale * dot(l),
             drag: -scale * dot(e),

@@ -19,6 +19,12 @@ pub enum Flow3Error {
         /// The shortest span accepted at this resolution.
         min: f64,
     },
+    /// A body that ends within the span on a periodic span.
+    #[error("a {shape:?} body does not span the period: a periodic span (periodic:P) takes the plate or a cylinder along the span (rect, ellipse, circle); give a finite span")]
+    ShapeNotPeriodic {
+        /// The shape given.
+        shape: super::shape::Shape3,
+    },
     /// A grid input is out of range.
     #[error("grid input {name} = {value} is out of range ({range})")]
     BadGrid {

@@ -8,6 +8,7 @@
 //! given number). With a periodic span the z axis is one uniform period of b (the plate spans it
 //! whole: an infinite span).
 use super::error::Flow3Error;
+use super::shape::Shape3;
 use crate::grid::{intervals_for_growth, stretched_offsets};
 
 /// The span of the plate.
@@ -56,6 +57,9 @@ pub struct GridSpec3 {
     pub stretch: Stretch3,
     /// Largest memory the solver may take (bytes, estimated as [`BYTES_PER_CELL`] per cell).
     pub memory_limit: f64,
+    /// The body inscribed in the box of chord, thickness and span (the plate by default).
+    #[serde(default)]
+    pub shape: Shape3,
 }
 
 /// The solver's memory per cell (bytes): velocities, right-hand sides (two levels), pressure
@@ -72,6 +76,7 @@ impl GridSpec3 {
             extent: [10.0; 3],
             stretch: Stretch3::GrowthCap(1.1),
             memory_limit: 8e9,
+            shape: Shape3::Box,
         }
     }
 
@@ -88,6 +93,9 @@ impl GridSpec3 {
         let b = self.span.length();
         if !(b > 0.0 && b.is_finite()) {
             return Err(Flow3Error::SpanNotPositive { span: b });
+        }
+        if matches!(self.span, Span::Periodic(_)) && !self.shape.spans_z() {
+            return Err(Flow3Error::ShapeNotPeriodic { shape: self.shape });
         }
         let h = 1.0 / n as f64;
         if b < 2.0 * h * (1.0 - 1e-12) {
@@ -197,10 +205,41 @@ impl Grid3 {
         self.n[0] * self.n[1] * self.n[2]
     }
 
-    /// Whether cell (i, j, k) is inside the plate.
+    /// Whether cell (i, j, k) is inside the rectangular plate (never for a curved body, whose
+    /// cells are told by their faces: [`super::cut`]).
     #[inline]
     pub fn solid(&self, c: [usize; 3]) -> bool {
-        self.plate && (0..3).all(|a| c[a] >= self.plate_lo[a] && c[a] < self.plate_hi[a])
+        self.plate
+            && !self.spec.shape.is_curved()
+            && (0..3).all(|a| c[a] >= self.plate_lo[a] && c[a] < self.plate_hi[a])
+    }
+
+    /// The half-extents of the box the body is inscribed in: (½, t/2, b/2).
+    pub fn half(&self) -> [f64; 3] {
+        [
+            0.5,
+            0.5 * self.spec.thickness,
+            0.5 * self.spec.span.length(),
+        ]
+    }
+
+    /// The body's planform area (chords², its projection on the x–z plane): the reference area
+    /// of its coefficients ([`super::Coefficients3`]).
+    pub fn planform_area(&self) -> f64 {
+        let box_area = self.spec.span.length();
+        match self.spec.shape {
+            Shape3::Box | Shape3::SpanCylinder => box_area,
+            Shape3::Ellipsoid | Shape3::Disk => box_area * std::f64::consts::PI / 4.0,
+        }
+    }
+
+    /// Whether the centre of cell (i, j, k) lies in the body (the plate's cells for the box).
+    pub fn covers_cell(&self, c: [usize; 3]) -> bool {
+        if !self.spec.shape.is_curved() {
+            return self.solid(c);
+        }
+        let x = std::array::from_fn(|a| 0.5 * (self.nodes[a][c[a]] + self.nodes[a][c[a] + 1]));
+        self.plate && self.spec.shape.contains(self.half(), x)
     }
 
     /// Smallest cell width along each axis.

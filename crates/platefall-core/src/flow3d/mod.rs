@@ -30,6 +30,7 @@
 mod added_mass;
 mod boundary;
 mod coefficients;
+mod cut;
 mod error;
 mod frame;
 mod grid;
@@ -43,8 +44,10 @@ mod phases;
 mod plate;
 mod project;
 mod saved;
+mod shape;
 mod snapshot;
 mod solver;
+mod wake;
 
 pub use added_mass::AddedMass3;
 pub use boundary::{OuterBc3, VelocityFn3};
@@ -60,5 +63,6 @@ pub use params::FlowParams3;
 pub use phases::{Phase3, PhaseMarker};
 pub use project::{JacobiCg, PoissonOperator, PoissonSolve, SolveStats};
 pub use saved::FlowState3;
+pub use shape::Shape3;
 pub use snapshot::FieldSnapshot3;
 pub use solver::{FlowSolver3, ForceFn3};

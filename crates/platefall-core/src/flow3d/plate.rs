@@ -8,10 +8,13 @@
 //! term replaces the flux through that face by (g_wall − q)/(Δ/2) (second order at the wall).
 //! The convective flux through a plate face vanishes by itself: the advecting velocity there
 //! is (u − g)·n = 0 on held points.
+use super::cut::CutBody;
 use super::frame::Frame3;
 use super::grid::Grid3;
 use super::layout::{Layout, G};
+use super::loads::{plate_loads, LoadInput, Loads3};
 use super::metrics::Metrics3;
+use super::project::PoissonOperator;
 
 /// A fluid point whose diffusion sees a wall.
 #[derive(Clone, Copy, Debug)]
@@ -32,6 +35,8 @@ pub struct Plate {
     /// Per component, the held box: lo..hi (exclusive) along each axis; empty without a plate.
     held: [[std::ops::Range<isize>; 3]; 3],
     walls: Vec<WallPoint>,
+    /// A curved body instead of the box (the box's ranges and walls are then empty).
+    cut: Option<Box<CutBody>>,
 }
 
 impl Plate {
@@ -39,6 +44,12 @@ impl Plate {
     pub fn new(grid: &Grid3, m: &Metrics3, lay: &Layout, nu: f64) -> Plate {
         if !grid.plate {
             return Plate::default();
+        }
+        if grid.spec.shape.is_curved() {
+            return Plate {
+                cut: Some(Box::new(CutBody::new(grid, m, lay, nu))),
+                ..Plate::default()
+            };
         }
         let (lo, hi) = (
             grid.plate_lo.map(|v| v as isize),
@@ -80,11 +91,28 @@ impl Plate {
                 }
             }
         }
-        Plate { held, walls }
+        Plate {
+            held,
+            walls,
+            cut: None,
+        }
     }
 
-    /// Sets every held point of the three components to g of `frame`.
+    /// No slip at the new level `frame`: every held point of the plate takes g; a curved
+    /// body's held, partly open and forced points as [`CutBody::impose`] says.
     pub fn impose(&self, vel: &mut [Vec<f64>; 3], m: &Metrics3, lay: &Layout, frame: &Frame3) {
+        match &self.cut {
+            Some(cut) => cut.impose(vel, frame),
+            None => self.hold(vel, m, lay, frame),
+        }
+    }
+
+    /// Every held point of the three components takes g of `frame` (at the start, and for the
+    /// unit motions of the added mass; the forced points of a curved body keep their values).
+    pub fn hold(&self, vel: &mut [Vec<f64>; 3], m: &Metrics3, lay: &Layout, frame: &Frame3) {
+        if let Some(cut) = &self.cut {
+            cut.hold(vel, frame);
+        }
         for (c, q) in vel.iter_mut().enumerate() {
             let [ri, rj, rk] = &self.held[c];
             for k in rk.clone() {
@@ -101,6 +129,9 @@ impl Plate {
     /// Replaces, in H, the diffusive flux through each plate face next to a fluid point by the
     /// one to the wall.
     pub fn correct_diffusion(&self, h: [&mut Vec<f64>; 3], vel: [&[f64]; 3], frame: &Frame3) {
+        if let Some(cut) = &self.cut {
+            return cut.correct_diffusion(h, vel, frame);
+        }
         for w in &self.walls {
             let q = vel[w.c];
             let q0 = q[w.idx];
@@ -112,6 +143,33 @@ impl Plate {
 
     /// Whether point p of component c is held.
     pub fn is_held(&self, c: usize, p: [isize; 3]) -> bool {
-        (0..3).all(|a| self.held[c][a].contains(&p[a]))
+        match &self.cut {
+            Some(cut) => cut.is_held(c, p),
+            None => (0..3).all(|a| self.held[c][a].contains(&p[a])),
+        }
+    }
+
+    /// The pressure operator of the grid with a curved body's cut and held faces (the box's
+    /// cells are left out by the operator itself).
+    pub fn shape_operator(&self, op: &mut PoissonOperator) {
+        if let Some(cut) = &self.cut {
+            cut.shape_operator(op);
+        }
+    }
+
+    /// Adds a curved body's covered parts of the cut faces to the cells' outflows `div` (only
+    /// where `active`, the operator's diagonal, is non-zero).
+    pub fn cut_flux(&self, vel: [&[f64]; 3], frame: &Frame3, active: &[f64], div: &mut [f64]) {
+        if let Some(cut) = &self.cut {
+            cut.cut_flux(vel, frame, active, div);
+        }
+    }
+
+    /// The fluid's force and moment on the body.
+    pub fn loads(&self, inp: &LoadInput) -> Loads3 {
+        match &self.cut {
+            Some(cut) => cut.loads(inp.vel, inp.p, inp.frame, inp.nu),
+            None => plate_loads(inp),
+        }
     }
 }

@@ -89,6 +89,33 @@ impl PoissonOperator {
         self.diag.len()
     }
 
+    /// Multiplies the coefficient of the + face along a of cell `lo` by `factor` (a cut face's
+    /// open fraction, 0 for a face the body holds); [`PoissonOperator::refresh_diagonal`] then
+    /// brings the diagonal up to date.
+    pub(super) fn scale_face(&mut self, a: usize, lo: usize, factor: f64) {
+        self.coef[a][lo] *= factor;
+    }
+
+    /// The diagonal from the face coefficients (each cell's sum; zero where every face is
+    /// closed: no unknown).
+    pub(super) fn refresh_diagonal(&mut self) {
+        let [nx, ny, nz] = self.n;
+        self.diag.iter_mut().for_each(|d| *d = 0.0);
+        for idx in 0..self.cells() {
+            let c = [idx % nx, (idx / nx) % ny, idx / (nx * ny)];
+            for a in 0..3 {
+                let k = self.coef[a][idx];
+                if k == 0.0 {
+                    continue;
+                }
+                let mut nb = c;
+                nb[a] = (nb[a] + 1) % [nx, ny, nz][a];
+                self.diag[idx] += k;
+                self.diag[flat(self.n, nb)] += k;
+            }
+        }
+    }
+
     /// (A x)_P for the cells of one z-plane k, written to `y` (that plane's slice).
     fn apply_plane(&self, x: &[f64], k: usize, y: &mut [f64]) {
         let [nx, ny, nz] = self.n;

@@ -60,7 +60,7 @@ impl FlowSolver3 {
         for k in 0..n[2] {
             for j in 0..n[1] {
                 for i in 0..n[0] {
-                    if grid.plate && grid.solid([i, j, k]) {
+                    if grid.covers_cell([i, j, k]) {
                         continue;
                     }
                     let g = gradient(&u, &centres, n, [i, j, k], grid.periodic_z);
@@ -174,6 +174,7 @@ mod tests {
             extent: [1.5; 3],
             stretch: Stretch3::GrowthCap(1.3),
             memory_limit: 1e9,
+            shape: Default::default(),
         };
         let grid = Grid3::new(&spec).unwrap().without_plate();
         let params = FlowParams3::default();

@@ -8,7 +8,7 @@ use super::error::{Flow3Error, BLOWUP_FACTOR};
 use super::frame::Frame3;
 use super::grid::Grid3;
 use super::layout::Layout;
-use super::loads::{plate_loads, LoadInput, Loads3};
+use super::loads::{LoadInput, Loads3};
 use super::metrics::Metrics3;
 use super::momentum::{explicit_rhs, RhsContext, RhsStats};
 use super::multigrid::MultigridCg;
@@ -79,13 +79,15 @@ impl FlowSolver3 {
         let metrics = Metrics3::new(&grid);
         let layout = Layout::new(grid.n);
         let nu = 1.0 / params.re;
-        let op = PoissonOperator::new(&grid, &metrics);
+        let plate = Plate::new(&grid, &metrics, &layout, nu);
+        let mut op = PoissonOperator::new(&grid, &metrics);
+        plate.shape_operator(&mut op);
         let cells = grid.cells();
         let min = grid.min_spacing();
         let dt_visc =
             params.visc_safety / (4.0 * nu * min.iter().map(|d| 1.0 / (d * d)).sum::<f64>());
         let mut s = FlowSolver3 {
-            plate: Plate::new(&grid, &metrics, &layout, nu),
+            plate,
             vel: std::array::from_fn(|_| layout.zeros()),
             h: std::array::from_fn(|_| layout.zeros()),
             h_old: std::array::from_fn(|_| layout.zeros()),
@@ -110,7 +112,7 @@ impl FlowSolver3 {
             metrics,
             layout,
         };
-        s.plate.impose(&mut s.vel, &s.metrics, &s.layout, &s.frame);
+        s.plate.hold(&mut s.vel, &s.metrics, &s.layout, &s.frame);
         Ok(s)
     }
 
@@ -145,7 +147,7 @@ impl FlowSolver3 {
             outer!(self).fill_ghosts(&mut self.vel, self.t);
         }
         self.plate
-            .impose(&mut self.vel, &self.metrics, &self.layout, &self.frame);
+            .hold(&mut self.vel, &self.metrics, &self.layout, &self.frame);
     }
 
     /// One step to t + dt with the body moving as `next` at the new time level.
@@ -269,6 +271,8 @@ impl FlowSolver3 {
         let vel = [&self.vel[0][..], &self.vel[1][..], &self.vel[2][..]];
         let op = self.pressure.operator();
         cell_fluxes(vel, &self.metrics, &self.layout, op, &mut self.rhs);
+        self.plate
+            .cut_flux(vel, &self.frame, &op.diag, &mut self.rhs);
         pressure_rhs(op, dt, &mut self.rhs, &mut self.weight);
         let stop = Stop {
             weight: &self.weight,
@@ -304,7 +308,7 @@ impl FlowSolver3 {
 
     /// The loads at the new level; an error if they are not finite.
     fn update_loads(&mut self) -> Result<(), Flow3Error> {
-        self.loads = plate_loads(&LoadInput {
+        self.loads = self.plate.loads(&LoadInput {
             grid: &self.grid,
             m: &self.metrics,
             layout: &self.layout,
@@ -369,6 +373,7 @@ impl FlowSolver3 {
         let vel = [&self.vel[0][..], &self.vel[1][..], &self.vel[2][..]];
         let mut div = vec![0.0; op.cells()];
         cell_fluxes(vel, &self.metrics, &self.layout, op, &mut div);
+        self.plate.cut_flux(vel, &self.frame, &op.diag, &mut div);
         for (d, v) in div.iter().zip(&op.volume) {
             worst = worst.max((d / v).abs());
         }
@@ -381,9 +386,9 @@ impl FlowSolver3 {
     }
 
     /// The loads at the current level as coefficients (lift, drag, side force; roll, yaw, pitch)
-    /// on the span, or the period of a periodic span.
+    /// on the body's planform area (the span, or the period of a periodic span, for a plate).
     pub fn coefficients(&self) -> Coefficients3 {
-        Coefficients3::new(&self.loads, &self.frame, self.grid.spec.span.length())
+        Coefficients3::new(&self.loads, &self.frame, self.grid.planform_area())
     }
 
     /// The grid.

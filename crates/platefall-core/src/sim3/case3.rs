@@ -45,6 +45,7 @@ impl<'a> Run3<'a> {
             extent: [extent; 3],
             stretch: Stretch3::GrowthCap(growth),
             memory_limit,
+            shape: Default::default(),
         };
         Run3 { config, grid }
     }

@@ -13,6 +13,7 @@ pub fn solver(n: usize, span: Span, frame: Frame3) -> FlowSolver3 {
         extent: [2.0; 3],
         stretch: Stretch3::GrowthCap(1.2),
         memory_limit: 1e9,
+        shape: Default::default(),
     };
     let params = FlowParams3 {
         re: 200.0,
