@@ -95,7 +95,7 @@ fn a_finite_span_has_no_side_force_roll_or_yaw() {
 #[test]
 fn options_a_three_dimensional_run_cannot_honour_are_refused_in_one_line() {
     let cases: [(&[&str], &str); 3] = [
-        (&["static", "--span", "2", "--shape", "ellipse"], "--shape"),
+        (&["static", "--span", "2", "--shape", "rounded"], "--shape"),
         (&["pinned", "--span", "2"], "pinned --span"),
         (&["free", "--span", "2", "--mass", "1"], "--mass"),
     ];
@@ -109,6 +109,20 @@ fn options_a_three_dimensional_run_cannot_honour_are_refused_in_one_line() {
     let (code, _, err) = platefall(&["static", "--span", "periodic:-1"]);
     assert_eq!(code, 2);
     assert!(err.contains("> 0"), "{err}");
+    // The curved bodies (docs/three-d.md "Bodies"): a sphere is one chord across, the bodies of
+    // three dimensions need a span, and they end within a periodic one.
+    let refused: [(&[&str], &str); 3] = [
+        (&["static", "--shape", "sphere", "--span", "2"], "--span 1"),
+        (&["static", "--shape", "disk"], "give --span"),
+        (&["static", "--shape", "ellipsoid", "--span", "periodic:1"], "periodic"),
+    ];
+    for (args, says) in refused {
+        let (code, out, err) = platefall(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(says), "{args:?}: {err}");
+        assert!(out.is_empty());
+    }
 }
 
 #[test]

@@ -20,7 +20,7 @@ pub enum Flow3Error {
         min: f64,
     },
     /// A body that ends within the span on a periodic span.
-    #[error("a {shape:?} body does not span the period: a periodic span (periodic:P) takes the plate or a cylinder along the span (rect, ellipse, circle); give a finite span")]
+    #[error("the body {shape:?} ends within the span, which a periodic span does not allow: a periodic span (periodic:P) takes the plate or a cylinder along the span (rect, ellipse, circle); give a finite span")]
     ShapeNotPeriodic {
         /// The shape given.
         shape: super::shape::Shape3,
