@@ -114,7 +114,10 @@ fn options_a_three_dimensional_run_cannot_honour_are_refused_in_one_line() {
     let refused: [(&[&str], &str); 3] = [
         (&["static", "--shape", "sphere", "--span", "2"], "--span 1"),
         (&["static", "--shape", "disk"], "give --span"),
-        (&["static", "--shape", "ellipsoid", "--span", "periodic:1"], "periodic"),
+        (
+            &["static", "--shape", "ellipsoid", "--span", "periodic:1"],
+            "periodic",
+        ),
     ];
     for (args, says) in refused {
         let (code, out, err) = platefall(args);
