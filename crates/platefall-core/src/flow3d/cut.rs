@@ -56,6 +56,8 @@ struct CutFace {
     cells: [usize; 2],
     /// Covered area A_f (1 − A).
     covered: f64,
+    /// Covered fraction 1 − A.
+    fraction: f64,
     /// Centroid of the covered part.
     covered_at: [f64; 3],
 }
@@ -119,7 +121,12 @@ struct Region {
 }
 
 impl Region {
-    /// The points of component c in the box.
+    /// The cells in the box.
+    fn cells(self) -> impl Iterator<Item = [isize; 3]> {
+        self.points(usize::MAX)
+    }
+
+    /// The points of component c in the box (the cells for c ≥ 3).
     fn points(self, c: usize) -> impl Iterator<Item = [isize; 3]> {
         let hi: [isize; 3] = std::array::from_fn(|a| self.hi[a] + isize::from(a == c));
         let lo = self.lo;
@@ -298,10 +305,7 @@ impl CutBody {
             }
         }
         for f in &self.faces {
-            let p = lay.point(f.idx);
-            let b: [usize; 2] = [(f.c + 1) % 3, (f.c + 2) % 3];
-            let area: f64 = b.iter().map(|&a| op.widths[a][p[a] as usize]).product();
-            op.scale_face(f.c, f.cells[0], 1.0 - f.covered / area);
+            op.scale_face(f.c, f.cells[0], 1.0 - f.fraction);
         }
         op.refresh_diagonal();
     }
@@ -325,14 +329,15 @@ impl CutBody {
         for w in &self.walls {
             let mut pw = p[w.cell];
             for (a, sides) in w.nbs.iter().enumerate() {
-                let slopes: Vec<f64> = sides
-                    .iter()
-                    .zip([-1.0, 1.0])
-                    .filter_map(|(s, sign)| s.map(|(nb, inv)| sign * (p[nb] - p[w.cell]) * inv))
-                    .collect();
-                if !slopes.is_empty() {
-                    let slope = slopes.iter().sum::<f64>() / slopes.len() as f64;
-                    pw += slope * (w.wall[a] - w.centre[a]);
+                let (mut sum, mut count) = (0.0, 0.0);
+                for (side, sign) in sides.iter().zip([-1.0, 1.0]) {
+                    if let Some((nb, inv)) = side {
+                        sum += sign * (p[*nb] - p[w.cell]) * inv;
+                        count += 1.0;
+                    }
+                }
+                if count > 0.0 {
+                    pw += sum / count * (w.wall[a] - w.centre[a]);
                 }
             }
             let df = w.area.map(|s| pw * s);
@@ -439,8 +444,8 @@ impl Build<'_> {
                 let mut x = [0.0; 3];
                 x[c] = ax[c].node(p[c]);
                 // The shapes are convex: a face whose corners are all inside is covered.
-                let corners = [0.0, 1.0].into_iter().flat_map(|s| [(s, 0.0), (s, 1.0)]);
-                let covered_whole = corners.clone().all(|(s, t)| {
+                let mut corners = [0.0, 1.0].into_iter().flat_map(|s| [(s, 0.0), (s, 1.0)]);
+                let covered_whole = corners.all(|(s, t)| {
                     let mut y = x;
                     y[b[0]] = lo[0] + w[0] * s;
                     y[b[1]] = lo[1] + w[1] * t;
@@ -467,6 +472,7 @@ impl Build<'_> {
                         idx: self.lay.at(p),
                         cells,
                         covered: fraction * w[0] * w[1],
+                        fraction,
                         covered_at: sum.map(|v| v / count as f64),
                     });
                 }
@@ -625,16 +631,11 @@ impl Build<'_> {
         let covered: HashMap<(usize, usize), f64> = body
             .faces
             .iter()
-            .map(|f| {
-                let p = self.lay.point(f.idx);
-                let b = [(f.c + 1) % 3, (f.c + 2) % 3];
-                let area: f64 = b.iter().map(|&a| self.m.axes[a].width(p[a])).product();
-                ((f.c, f.idx), f.covered / area)
-            })
+            .map(|f| ((f.c, f.idx), f.fraction))
             .collect();
         let (n, periodic) = (self.grid.n, self.grid.periodic_z);
         let mut out = Vec::new();
-        for p in self.region.points(usize::MAX) {
+        for p in self.region.cells() {
             let mut area = [0.0; 3];
             let mut nbs = [[None; 2]; 3];
             let mut any_open = false;
