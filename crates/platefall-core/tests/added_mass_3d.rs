@@ -144,8 +144,10 @@ fn body_added_mass(shape: Shape3, n: usize, thickness: f64, span: f64) -> [[f64;
 #[test]
 fn a_sphere_has_half_its_displaced_mass_along_every_axis() {
     // Diameter 1: ½ρV = π/12. The cut faces' apertures are exact to the sampling, so the error
-    // is the discretisation's: first order, within 3 % at N = 16 and 1.5 % at N = 32. A sphere
-    // turning about its centre displaces no fluid: its rotational added mass vanishes.
+    // is the discretisation's: within 3 % at N = 16 and 1.5 % at N = 32, and smaller on the finer
+    // grid (the wall pressure is read from clean cells, docs/three-d.md "Bodies", which costs the
+    // first order of reading the cut cells themselves: +2.1 % and +1.4 %). A sphere turning
+    // about its centre displaces no fluid: its rotational added mass vanishes.
     let exact = std::f64::consts::PI / 12.0;
     let mut previous = f64::INFINITY;
     for (n, bound) in [(16, 0.03), (32, 0.015)] {
@@ -162,7 +164,7 @@ fn a_sphere_has_half_its_displaced_mass_along_every_axis() {
         );
         assert!(error.abs() < bound, "N = {n}: {error:+.4}");
         assert!(
-            error.abs() < 0.6 * previous,
+            error.abs() < previous,
             "N = {n}: {error:+.4} after {previous:+.4}"
         );
         previous = error.abs();

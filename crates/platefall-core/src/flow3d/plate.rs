@@ -165,6 +165,14 @@ impl Plate {
         }
     }
 
+    /// Gives the islands of a cut-cell body their clean neighbours' pressure
+    /// ([`CutBody::settle_pressure`]); nothing for the box.
+    pub fn settle_pressure(&self, p: &mut [f64]) {
+        if let Some(cut) = &self.cut {
+            cut.settle_pressure(p);
+        }
+    }
+
     /// The fluid's force and moment on the body.
     pub fn loads(&self, inp: &LoadInput) -> Loads3 {
         match &self.cut {

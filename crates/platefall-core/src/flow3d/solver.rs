@@ -49,6 +49,8 @@ pub struct FlowSolver3 {
     pub(super) p: Vec<f64>,
     /// The pressures of the level before (the warm start's extrapolation).
     pub(super) p_old: Vec<f64>,
+    /// The pressure's increment over the step, the projection's unknown.
+    phi: Vec<f64>,
     /// The pressure equation's right-hand side and the divergence weights Δt / V.
     rhs: Vec<f64>,
     weight: Vec<f64>,
@@ -93,6 +95,7 @@ impl FlowSolver3 {
             h_old: std::array::from_fn(|_| layout.zeros()),
             p: vec![0.0; cells],
             p_old: vec![0.0; cells],
+            phi: vec![0.0; cells],
             rhs: vec![0.0; cells],
             weight: vec![0.0; cells],
             pressure: Box::new(MultigridCg::new(op)?),
@@ -217,8 +220,9 @@ impl FlowSolver3 {
         Ok(())
     }
 
-    /// u* = uⁿ + Δt[(1 + r/2)Hⁿ − (r/2)Hⁿ⁻¹] (variable-step AB2, r = Δt/Δtⁿ⁻¹; Euler on the
-    /// first step). H is zero outside the interior points, so those keep their values.
+    /// u* = uⁿ + Δt[(1 + r/2)Hⁿ − (r/2)Hⁿ⁻¹ − ∇pⁿ] (variable-step AB2, r = Δt/Δtⁿ⁻¹; Euler on
+    /// the first step). H is zero outside the interior points, so those keep their values; the
+    /// old pressure's gradient acts where the projection's does.
     fn predict(&mut self, dt: f64) {
         let dt_prev = if self.steps == 0 { 0.0 } else { self.dt_prev };
         let Ab2 {
@@ -233,6 +237,8 @@ impl FlowSolver3 {
                 .zip(h.par_iter().zip(h_old.par_iter()))
                 .for_each(|(u, (h, ho))| *u += dt * (c_new * h + c_old * ho));
         }
+        let op = self.pressure.operator();
+        correct(&mut self.vel, &self.metrics, &self.layout, op, &self.p, dt);
     }
 
     /// The frame of the new level, no slip on the plate and the outer normals at tⁿ⁺¹.
@@ -254,19 +260,22 @@ impl FlowSolver3 {
         outer!(self).set_normals(&mut self.vel, self.t + dt, dt);
     }
 
-    /// Solves for pⁿ⁺¹ and corrects the velocity. The solve starts from the linear extrapolation
-    /// pⁿ + (Δt / Δtⁿ⁻¹)(pⁿ − pⁿ⁻¹) (from pⁿ on the first step), whose error is O(Δt²) where pⁿ's
-    /// own is O(Δt): fewer iterations to the same tolerance.
+    /// Solves for the increment φ = pⁿ⁺¹ − pⁿ and corrects the velocity (an incremental
+    /// projection, docs/three-d.md "The step"). The solve starts from the last increment scaled
+    /// to this step, (Δt / Δtⁿ⁻¹)(pⁿ − pⁿ⁻¹) (zero on the first step).
+    ///
+    /// The predictor carries the old gradient, so the projection only adds the pressure's change:
+    /// values imposed next to a curved wall (held and forced points, `cut.rs`) that differ from
+    /// what the last projection left by O(Δt ∇φ) then disturb the new pressure by O(Δt), where a
+    /// projection for the whole pressure would carry that difference over Δt.
     fn project(&mut self, dt: f64) -> Result<(), Flow3Error> {
         let ratio = if self.steps > 0 {
             dt / self.dt_prev
         } else {
             0.0
         };
-        for (p, old) in self.p.iter_mut().zip(self.p_old.iter_mut()) {
-            let now = *p;
-            *p = now + ratio * (now - *old);
-            *old = now;
+        for ((phi, p), old) in self.phi.iter_mut().zip(&self.p).zip(&self.p_old) {
+            *phi = ratio * (p - old);
         }
         let vel = [&self.vel[0][..], &self.vel[1][..], &self.vel[2][..]];
         let op = self.pressure.operator();
@@ -279,7 +288,7 @@ impl FlowSolver3 {
             tol: self.params.div_tol,
             max_iterations: self.params.max_iterations,
         };
-        self.solve_stats = self.pressure.solve(&self.rhs, &mut self.p, stop);
+        self.solve_stats = self.pressure.solve(&self.rhs, &mut self.phi, stop);
         if !self.solve_stats.converged {
             return Err(Flow3Error::PressureNotConverged {
                 iterations: self.solve_stats.iterations,
@@ -287,14 +296,20 @@ impl FlowSolver3 {
                 tolerance: self.params.div_tol,
             });
         }
+        let op = self.pressure.operator();
         correct(
             &mut self.vel,
             &self.metrics,
             &self.layout,
-            self.pressure.operator(),
-            &self.p,
+            op,
+            &self.phi,
             dt,
         );
+        for ((p, old), phi) in self.p.iter_mut().zip(self.p_old.iter_mut()).zip(&self.phi) {
+            *old = *p;
+            *p += phi;
+        }
+        self.plate.settle_pressure(&mut self.p);
         Ok(())
     }
 

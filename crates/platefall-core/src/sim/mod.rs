@@ -31,6 +31,7 @@ mod sample;
 mod saved;
 mod spec;
 mod timestep;
+pub(crate) use timestep::land;
 mod turns;
 
 pub use error::SimError;

@@ -23,13 +23,21 @@ pub fn choose_dt(
         dt = dt.min(MAX_GROWTH * dt_prev);
     }
     for target in [release, time.t_end] {
-        let remaining = target - t;
-        if remaining > 1e-9 {
-            if remaining <= dt {
-                dt = remaining;
-            } else if remaining < 2.0 * dt {
-                dt = 0.5 * remaining;
-            }
+        dt = land(t, dt, target);
+    }
+    dt
+}
+
+/// The step `dt` from `t` shortened to land exactly on `target` without leaving a sliver: the
+/// whole remainder when it is at most `dt`, half of it when it is less than two steps; `dt`
+/// itself when the target is farther or already passed.
+pub fn land(t: f64, dt: f64, target: f64) -> f64 {
+    let remaining = target - t;
+    if remaining > 1e-9 {
+        if remaining <= dt {
+            return remaining;
+        } else if remaining < 2.0 * dt {
+            return 0.5 * remaining;
         }
     }
     dt

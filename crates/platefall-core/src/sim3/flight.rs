@@ -11,6 +11,7 @@ use nalgebra::{Rotation3, Vector3};
 
 use crate::body::six::{Constraint6, Loads6, RigidBody6, SixError, State6, StrongCoupling6};
 use crate::flow3d::{AddedMass3, Coefficients3, Flow3Error, FlowSolver3, Frame3, PhaseMarker};
+use crate::sim::land;
 
 /// Why a flight could not start or stopped.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -140,7 +141,7 @@ impl Flight3 {
                 self.body.set_constraint(constraint)?;
                 self.release = None;
             }
-            Some((t_release, _)) => dt = dt.min(t_release - t),
+            Some((t_release, _)) => dt = land(t, dt, t_release),
             None => {}
         }
         if !(dt > 0.0 && dt.is_finite()) {

@@ -3,7 +3,7 @@ use std::ops::ControlFlow;
 
 use super::planar::planar_frame;
 use crate::flow3d::{Coefficients3, Flow3Error, FlowSolver3};
-use crate::sim::Case;
+use crate::sim::{land, Case};
 
 /// One step's outputs.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
@@ -57,8 +57,8 @@ pub fn run_prescribed(
         // The first step's stable Δt; a restored flow keeps the one its last step left.
         flow.begin_step()?;
     }
-    while flow.t() < t_end {
-        let dt = flow.stable_dt().min(dt_max).min(t_end - flow.t());
+    while flow.t() < t_end - 1e-9 {
+        let dt = land(flow.t(), flow.stable_dt().min(dt_max), t_end);
         let state = case.prescribed_state(flow.t() + dt);
         flow.advance(dt, planar_frame(&state))?;
         let stats = flow.solve_stats();

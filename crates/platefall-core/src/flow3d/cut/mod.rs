@@ -9,24 +9,30 @@
 //!   operator takes A A_f / d_f on such a face and nothing across a closed one, so the projection
 //!   makes the flow divergence-free in every cut cell with the wall's own flux, through the open
 //!   part of every face (closing the open parts of held faces would grow the body by a fraction
-//!   of a cell: +4.5 % on a sphere's added mass at 32 cells across, +0.9 % with them open). A
+//!   of a cell: +4.5 % on a sphere's added mass at 32 cells across, +1.4 % with them open). A
 //!   partly open held point takes, before each projection, the value on the line from its fluid
 //!   neighbour through the wall, extended into the body.
 //! - **Momentum next to the wall.** Along each grid line where the boundary cuts the segment
 //!   from a fluid point P to a held neighbour Q at the fraction δ: for δ ≥ ½ the viscous flux
 //!   through that side of P's control volume is the wall's, ν (g_b − u_P)/(δ Δ); for δ < ½,
 //!   u_P lies on the straight line from the wall value to the point opposite (or a second wall).
-//! - **Loads.** The pressure force is Σ p_w S_P over the cut cells, S_P = −Σ_f A A_f n_f the
-//!   wall's area vector that closes the cell's open faces (exact: a constant pressure gives no
-//!   force) and p_w the cell's pressure carried to the wall point along its gradient; the
-//!   viscous force is the sum of the wall fluxes of the near-wall stencils,
-//!   ν A (u_P − g_b)/(δ Δ) at every crossing (the stress the momentum equations apply).
+//! - **Loads** (`walls.rs`). The pressure force is Σ p_w S_P over the cut cells,
+//!   S_P = −Σ_f A A_f n_f the wall's area vector that closes the cell's open faces (exact: a
+//!   constant pressure gives no force), p_w the pressure of a clean cell carried to the wall point
+//!   along its gradient; the viscous force is ν A ∂w/∂s at every crossing of a grid line, w the
+//!   velocity relative to the body, from the first two free points on the line (second order).
+//!   A cut cell whose open faces are all held or forced (an island) has no free velocity: its
+//!   pressure answers only the imposed values, so it is read from its clean neighbours and, after
+//!   each projection, set to theirs.
 use std::collections::HashMap;
+
+mod walls;
+
+use walls::{Shear, WallCell};
 
 use super::frame::Frame3;
 use super::grid::Grid3;
 use super::layout::{Layout, G};
-use super::loads::Loads3;
 use super::metrics::Metrics3;
 use super::project::{flat, PoissonOperator};
 use super::shape::Shape3;
@@ -91,26 +97,16 @@ struct Forced {
     weight: f64,
 }
 
-/// One grid line's crossing of the wall next to a fluid point, for the viscous load: the body
-/// takes `coef` · ν (u_P − g_b) along c (coef = A / (δ Δ)).
-#[derive(Clone, Copy, Debug)]
-struct Shear {
-    c: usize,
-    idx: usize,
-    b: [f64; 3],
-    coef: f64,
-}
-
-/// A cell the wall passes through: its area vector (pointing into the body), the wall point and
-/// the neighbours that give the pressure's gradient.
-#[derive(Clone, Copy, Debug)]
-struct WallCell {
-    cell: usize,
-    centre: [f64; 3],
-    wall: [f64; 3],
-    area: [f64; 3],
-    /// Per axis, the open neighbours below and above: (cell, 1 / distance between centres).
-    nbs: [[Option<(usize, f64)>; 2]; 3],
+impl Forced {
+    /// The point's value on its line, from its component's values `q` and the wall's motion.
+    fn value(&self, q: &[f64], frame: &Frame3) -> f64 {
+        let gb = frame.g(self.c, self.b);
+        let far = match self.far {
+            Far::Point(i) => q[i],
+            Far::Wall(b2) => frame.g(self.c, b2),
+        };
+        gb + (far - gb) * self.weight
+    }
 }
 
 /// The index box examined around the body (cells lo..hi per axis).
@@ -154,6 +150,9 @@ pub struct CutBody {
     forced: Vec<Forced>,
     shear: Vec<Shear>,
     walls: Vec<WallCell>,
+    /// Islands of the cut ([`Faces`]) and the clean cells whose pressure they take: (island,
+    /// clean cell).
+    islands: Vec<[usize; 2]>,
 }
 
 /// What the construction reads.
@@ -211,6 +210,7 @@ impl CutBody {
             forced: Vec::new(),
             shear: Vec::new(),
             walls: Vec::new(),
+            islands: Vec::new(),
         };
         body.faces = b.cut_faces(&body);
         let open: std::collections::HashSet<(usize, usize)> =
@@ -224,7 +224,7 @@ impl CutBody {
             .collect();
         body.forced.extend(extended);
         b.stencils(&mut body, nu);
-        body.walls = b.wall_cells(&body);
+        (body.walls, body.islands) = b.wall_cells(&body);
         body
     }
 
@@ -271,13 +271,7 @@ impl CutBody {
             vel[h.c][h.idx] = frame.g(h.c, h.at);
         }
         for f in &self.forced {
-            let q = &mut vel[f.c];
-            let gb = frame.g(f.c, f.b);
-            let far = match f.far {
-                Far::Point(i) => q[i],
-                Far::Wall(b2) => frame.g(f.c, b2),
-            };
-            q[f.idx] = gb + (far - gb) * f.weight;
+            vel[f.c][f.idx] = f.value(&vel[f.c], frame);
         }
     }
 
@@ -323,48 +317,14 @@ impl CutBody {
         }
     }
 
-    /// The fluid's force and moment on the body (viscous part with `nu`; none for 0).
-    pub fn loads(&self, vel: [&[f64]; 3], p: &[f64], frame: &Frame3, nu: f64) -> Loads3 {
-        let mut out = Loads3::default();
-        for w in &self.walls {
-            let mut pw = p[w.cell];
-            for (a, sides) in w.nbs.iter().enumerate() {
-                let (mut sum, mut count) = (0.0, 0.0);
-                for (side, sign) in sides.iter().zip([-1.0, 1.0]) {
-                    if let Some((nb, inv)) = side {
-                        sum += sign * (p[*nb] - p[w.cell]) * inv;
-                        count += 1.0;
-                    }
-                }
-                if count > 0.0 {
-                    pw += sum / count * (w.wall[a] - w.centre[a]);
-                }
-            }
-            let df = w.area.map(|s| pw * s);
-            add_load(&mut out, w.wall, df, true);
-        }
-        if nu > 0.0 {
-            for s in &self.shear {
-                let mut df = [0.0; 3];
-                df[s.c] = nu * s.coef * (vel[s.c][s.idx] - frame.g(s.c, s.b));
-                add_load(&mut out, s.b, df, false);
-            }
-        }
-        out
-    }
-}
-
-/// Adds force `df` at `x` (and its moment about the centre) to `out`.
-fn add_load(out: &mut Loads3, x: [f64; 3], df: [f64; 3], pressure: bool) {
-    for (a, d) in df.iter().enumerate() {
-        out.force[a] += d;
-        if pressure {
-            out.force_pressure[a] += d;
+    /// Gives each island of the cut its clean neighbour's pressure. An island's own pressure
+    /// only moves the imposed values on its faces; left alone it gathers at every step the
+    /// difference between those and the values the last projection left, over Δt.
+    pub fn settle_pressure(&self, p: &mut [f64]) {
+        for &[island, clean] in &self.islands {
+            p[island] = p[clean];
         }
     }
-    out.moment[0] += x[1] * df[2] - x[2] * df[1];
-    out.moment[1] += x[2] * df[0] - x[0] * df[2];
-    out.moment[2] += x[0] * df[1] - x[1] * df[0];
 }
 
 /// The cells below and above the face of point p of component c (flat indices), or none at
@@ -483,6 +443,7 @@ impl Build<'_> {
 
     /// The wall fluxes, forced points and shear samples of every fluid point next to the wall.
     fn stencils(&self, body: &mut CutBody, nu: f64) {
+        let mut lines = Vec::new();
         for c in 0..3 {
             for p in self.region.points(c) {
                 if body.is_held(c, p) {
@@ -493,19 +454,12 @@ impl Build<'_> {
                     continue;
                 }
                 let idx = self.lay.at(p);
-                for x in &crossings {
-                    body.shear.push(Shear {
-                        c,
-                        idx,
-                        b: x.b,
-                        coef: x.area / (x.delta * x.gap),
-                    });
-                }
                 let nearest = crossings
                     .iter()
                     .min_by(|a, b| a.delta.total_cmp(&b.delta))
                     .copied()
                     .expect("not empty");
+                lines.extend(crossings.iter().map(|x| (c, p, *x)));
                 if nearest.delta < FORCE_BELOW {
                     body.forced.push(self.forced(body, c, p, nearest));
                     continue;
@@ -522,6 +476,12 @@ impl Build<'_> {
                 }
             }
         }
+        let forced: std::collections::HashSet<(usize, usize)> =
+            body.forced.iter().map(|f| (f.c, f.idx)).collect();
+        body.shear = lines
+            .into_iter()
+            .map(|(c, p, x)| self.shear(body, &forced, c, p, x))
+            .collect();
     }
 
     /// The crossings of the wall on the grid lines from point p of component c to its six
@@ -624,70 +584,6 @@ impl Build<'_> {
             far: Far::Point(self.lay.at(f)),
             weight: (-(1.0 - delta) / delta.max(1e-12)).max(-2.0),
         }
-    }
-
-    /// The cells of the region the wall passes through, with their area vectors.
-    fn wall_cells(&self, body: &CutBody) -> Vec<WallCell> {
-        let covered: HashMap<(usize, usize), f64> = body
-            .faces
-            .iter()
-            .map(|f| ((f.c, f.idx), f.fraction))
-            .collect();
-        let (n, periodic) = (self.grid.n, self.grid.periodic_z);
-        let mut out = Vec::new();
-        for p in self.region.cells() {
-            let mut area = [0.0; 3];
-            let mut nbs = [[None; 2]; 3];
-            let mut any_open = false;
-            for a in 0..3 {
-                let mut up = p;
-                up[a] += 1;
-                let (lo, hi) = (body.open(a, p, &covered), body.open(a, up, &covered));
-                let b = [(a + 1) % 3, (a + 2) % 3];
-                let face: f64 = b.iter().map(|&e| self.m.axes[e].width(p[e])).product();
-                area[a] = face * (lo - hi);
-                any_open |= lo > 0.0 || hi > 0.0;
-                for (k, (open, face_p)) in [(lo, p), (hi, up)].into_iter().enumerate() {
-                    if open > 0.0 {
-                        if let Some(cells) = face_cells(n, periodic, a, face_p) {
-                            let ax = &self.m.axes[a];
-                            let inv = 1.0 / (ax.centre(face_p[a]) - ax.centre(face_p[a] - 1));
-                            nbs[a][k] = Some((cells[1 - k], inv));
-                        }
-                    }
-                }
-            }
-            let size = area.iter().map(|v| v * v).sum::<f64>().sqrt();
-            if !any_open || size <= 1e-12 * self.grid.h * self.grid.h {
-                continue;
-            }
-            let centre = self.m.cell_centre(p);
-            out.push(WallCell {
-                cell: flat(n, p.map(|v| v as usize)),
-                centre,
-                wall: self.wall_point(centre, area.map(|v| v / size)),
-                area,
-                nbs,
-            });
-        }
-        out
-    }
-
-    /// The wall point on the line through a cell's centre along its wall normal `dir` (into the
-    /// body), within a cell diagonal; the centre if the line does not cross there.
-    fn wall_point(&self, centre: [f64; 3], dir: [f64; 3]) -> [f64; 3] {
-        let reach = 2.0 * self.grid.h.max(1e-300) * 3f64.sqrt();
-        let along = |s: f64| std::array::from_fn(|a| centre[a] + s * dir[a]);
-        let (outside, inside) = if self.inside(centre) {
-            (along(-reach), centre)
-        } else {
-            (centre, along(reach))
-        };
-        if self.inside(outside) || !self.inside(inside) {
-            return centre;
-        }
-        let f = self.shape.crossing(self.half, outside, inside);
-        std::array::from_fn(|a| outside[a] + f * (inside[a] - outside[a]))
     }
 }
 
