@@ -227,6 +227,9 @@ impl Build<'_> {
     }
 }
 
+/// How many open faces away from an island its pressure's clean cells may lie.
+const ISLAND_REACH: usize = 3;
+
 /// Point p moved by `by` along axis a.
 fn step(mut p: [isize; 3], a: usize, by: isize) -> [isize; 3] {
     p[a] += by;
@@ -299,22 +302,55 @@ impl<'a> Faces<'a> {
     }
 
     /// The cells wall cell p reads its pressure from, with weights summing to 1: itself if
-    /// clean; else its clean neighbours across open faces, weighted by how far out along the
-    /// wall's outward normal they lie (`dir` points into the body; alike if none lies outward,
-    /// so that a symmetric body reads symmetric cells); itself if it has none.
+    /// clean; else the clean cells nearest to it through open faces (its neighbours, or theirs
+    /// where the islands form a cluster, at most [`ISLAND_REACH`] faces away), weighted by how far
+    /// out along the wall's outward normal they lie (`dir` points into the body; alike if none
+    /// lies outward, so that a symmetric body reads symmetric cells); itself if there are none.
     fn sources(&self, p: [isize; 3], dir: [f64; 3]) -> Vec<(f64, [isize; 3])> {
         if self.clean(p) {
             return vec![(1.0, p)];
         }
-        let mut out: Vec<(f64, [isize; 3])> = self
-            .across(p)
-            .filter(|&(_, _, q)| self.clean(q))
-            .map(|(a, k, q)| ((-dir[a] * (2.0 * k as f64 - 1.0)).max(0.0), q))
+        let (mut seen, mut layer) = (vec![p], vec![p]);
+        for _ in 0..ISLAND_REACH {
+            let mut next = Vec::new();
+            for &c in &layer {
+                for (_, _, q) in self.across(c) {
+                    if !seen.contains(&q) {
+                        seen.push(q);
+                        next.push(q);
+                    }
+                }
+            }
+            let clean: Vec<[isize; 3]> = next.iter().copied().filter(|&q| self.clean(q)).collect();
+            if !clean.is_empty() {
+                return self.weighted(p, dir, clean);
+            }
+            layer = next;
+        }
+        vec![(1.0, p)]
+    }
+
+    /// Cells `from` around cell p weighted by max(0, −dir · ê), ê the unit vector from p's
+    /// centre to theirs; alike if every weight is zero.
+    fn weighted(
+        &self,
+        p: [isize; 3],
+        dir: [f64; 3],
+        from: Vec<[isize; 3]>,
+    ) -> Vec<(f64, [isize; 3])> {
+        let m = self.build.m;
+        let centre = m.cell_centre(p);
+        let mut out: Vec<(f64, [isize; 3])> = from
+            .into_iter()
+            .map(|q| {
+                let x = m.cell_centre(q);
+                let e: [f64; 3] = std::array::from_fn(|a| x[a] - centre[a]);
+                let len = e.iter().map(|v| v * v).sum::<f64>().sqrt().max(1e-300);
+                let out = -(0..3).map(|a| dir[a] * e[a]).sum::<f64>() / len;
+                (out.max(0.0), q)
+            })
             .collect();
         let total: f64 = out.iter().map(|x| x.0).sum();
-        if out.is_empty() {
-            return vec![(1.0, p)];
-        }
         let count = out.len() as f64;
         for x in &mut out {
             x.0 = if total > 0.0 {
