@@ -4,7 +4,7 @@
 use std::ops::ControlFlow;
 
 mod common3;
-use common3::solver;
+use common3::PLATE;
 
 use platefall_core::body::six::{Constraint6, PhysicalPlate6, RigidBody6, State6};
 use platefall_core::body::AbStart;
@@ -34,11 +34,11 @@ fn forced(flow: &mut FlowSolver3, stop: Option<usize>) -> Vec<Sample3> {
 #[test]
 fn a_restored_prescribed_run_goes_on_bit_for_bit() {
     let frame = planar_frame(&FORCED.prescribed_state(0.0));
-    let mut straight = solver(8, Span::Finite(1.0), frame);
+    let mut straight = PLATE.solver(8, Span::Finite(1.0), frame);
     let all = forced(&mut straight, None);
-    let mut first = solver(8, Span::Finite(1.0), frame);
+    let mut first = PLATE.solver(8, Span::Finite(1.0), frame);
     let head = forced(&mut first, Some(4));
-    let mut resumed = solver(8, Span::Finite(1.0), frame);
+    let mut resumed = PLATE.solver(8, Span::Finite(1.0), frame);
     resumed.restore_state(&first.save_state()).unwrap();
     let tail = forced(&mut resumed, None);
     assert!(
@@ -54,11 +54,11 @@ fn a_restored_prescribed_run_goes_on_bit_for_bit() {
 #[test]
 fn a_state_of_another_grid_is_refused() {
     let frame = planar_frame(&FORCED.prescribed_state(0.0));
-    let saved = solver(8, Span::Finite(1.0), frame).save_state();
-    let mut other = solver(6, Span::Finite(1.0), frame);
+    let saved = PLATE.solver(8, Span::Finite(1.0), frame).save_state();
+    let mut other = PLATE.solver(6, Span::Finite(1.0), frame);
     let e = other.restore_state(&saved).unwrap_err();
     assert!(matches!(e, Flow3Error::StateMismatch { .. }), "{e}");
-    let mut periodic = solver(8, Span::Periodic(1.0), frame);
+    let mut periodic = PLATE.solver(8, Span::Periodic(1.0), frame);
     assert!(periodic.restore_state(&saved).is_err());
 }
 
@@ -67,7 +67,7 @@ fn flight() -> Flight3 {
     let card = PhysicalPlate6::card().nondimensional().unwrap();
     let start = State6::release(1.0, -0.5, 0.3);
     let body = RigidBody6::new(card, Constraint6::Free, start, 2, AbStart::Ramp).unwrap();
-    let flow = solver(8, Span::Finite(1.0), frame_of(&start));
+    let flow = PLATE.solver(8, Span::Finite(1.0), frame_of(&start));
     Flight3::new(flow, body).unwrap().hold_until(0.1).unwrap()
 }
 

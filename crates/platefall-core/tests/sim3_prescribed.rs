@@ -10,7 +10,7 @@ use platefall_core::sim::Case;
 use platefall_core::sim3::{planar_frame, run_prescribed, Sample3};
 
 fn solver(case: &Case, span: Span) -> FlowSolver3 {
-    common3::solver(8, span, planar_frame(&case.prescribed_state(0.0)))
+    common3::PLATE.solver(8, span, planar_frame(&case.prescribed_state(0.0)))
 }
 
 fn run(case: Case, span: Span, t_end: f64) -> Vec<Sample3> {

@@ -14,6 +14,14 @@ impl FlowSolver {
         self.loads
     }
 
+    /// The loads the plate's read-out gives for the cell pressures `p` (index as [`Self::p`])
+    /// with the current velocities: for comparing read-outs and pressure fields (the solver's own
+    /// loads are those of its own pressure).
+    pub fn loads_for(&self, p: &[f64]) -> BodyAxesLoads {
+        self.wall
+            .loads(&self.u, &self.v, p, &self.frame, self.params.nu())
+    }
+
     /// C_L, C_D, C_M at the current time level (docs/physics.md §5).
     pub fn coefficients(&self) -> (f64, f64, f64) {
         plate::coefficients(&self.loads, &self.frame)

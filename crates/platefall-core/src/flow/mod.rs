@@ -347,9 +347,7 @@ impl FlowSolver {
 
     /// Phase 6: the loads on the plate after a projection; an error if they are not finite.
     fn update_loads(&mut self) -> Result<(), FlowError> {
-        self.loads = self
-            .wall
-            .loads(&self.u, &self.v, &self.p, &self.frame, self.params.nu());
+        self.loads = self.loads_for(&self.p);
         let l = &self.loads;
         if !(l.fx.is_finite() && l.fy.is_finite() && l.moment.is_finite()) {
             return Err(self.diverged("the force on the plate is not finite"));

@@ -24,7 +24,7 @@
 //!   A cut cell whose open faces are all held or forced (an island) has no free velocity: its
 //!   pressure answers only the imposed values, so it is read from its clean neighbours and, after
 //!   each projection, set to theirs.
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 use super::frame::Frame3;
 use super::grid::Grid3;
@@ -143,6 +143,8 @@ pub struct CutBody {
     /// negative weights).
     held_open: Vec<Held>,
     faces: Vec<CutFace>,
+    /// Per component, the cut faces' flat indices (sorted) and covered fractions.
+    covered: [Vec<(usize, f64)>; 3],
     flux: Vec<WallFlux>,
     forced: Vec<Forced>,
     shear: Vec<Shear>,
@@ -203,6 +205,7 @@ impl CutBody {
             held,
             held_open: Vec::new(),
             faces: Vec::new(),
+            covered: Default::default(),
             flux: Vec::new(),
             forced: Vec::new(),
             shear: Vec::new(),
@@ -210,6 +213,16 @@ impl CutBody {
             islands: Vec::new(),
         };
         body.faces = b.cut_faces(&body);
+        body.covered = std::array::from_fn(|c| {
+            let mut v: Vec<(usize, f64)> = body
+                .faces
+                .iter()
+                .filter(|f| f.c == c)
+                .map(|f| (f.idx, f.fraction))
+                .collect();
+            v.sort_unstable_by_key(|x| x.0);
+            v
+        });
         let open: HashSet<(usize, usize)> = body.faces.iter().map(|f| (f.c, f.idx)).collect();
         let (held_open, held) = body.held.iter().partition(|h| open.contains(&(h.c, h.idx)));
         (body.held, body.held_open) = (held, held_open);
@@ -230,11 +243,15 @@ impl CutBody {
     }
 
     /// The open fraction of the face of point p of component c: 0 held, 1 uncovered.
-    fn open(&self, c: usize, p: [isize; 3], areas: &HashMap<(usize, usize), f64>) -> f64 {
+    fn open(&self, c: usize, p: [isize; 3]) -> f64 {
         let p = self.canonical(c, p);
         let idx = self.layout.at(p);
-        let whole = if self.is_held(c, p) { 1.0 } else { 0.0 };
-        1.0 - areas.get(&(c, idx)).copied().unwrap_or(whole)
+        let covered = match self.covered[c].binary_search_by_key(&idx, |x| x.0) {
+            Ok(k) => self.covered[c][k].1,
+            Err(_) if self.is_held(c, p) => 1.0,
+            Err(_) => 0.0,
+        };
+        1.0 - covered
     }
 
     /// The point itself, or for the periodic copy of a w face (k = nz) the face it copies
@@ -326,6 +343,17 @@ impl CutBody {
 /// The cells below and above the face of point p of component c (flat indices), or none at
 /// the outer boundary.
 fn face_cells(n: [usize; 3], periodic_z: bool, c: usize, p: [isize; 3]) -> Option<[usize; 2]> {
+    face_cell_points(n, periodic_z, c, p).map(|cells| cells.map(|q| flat(n, q.map(|v| v as usize))))
+}
+
+/// The cells below and above the face of point p of component c (wrapped across a periodic
+/// span), or none at the outer boundary.
+fn face_cell_points(
+    n: [usize; 3],
+    periodic_z: bool,
+    c: usize,
+    p: [isize; 3],
+) -> Option<[[isize; 3]; 2]> {
     let nc = n[c] as isize;
     let wraps = c == 2 && periodic_z;
     let (mut lo, mut hi) = (p, p);
@@ -343,7 +371,7 @@ fn face_cells(n: [usize; 3], periodic_z: bool, c: usize, p: [isize; 3]) -> Optio
         hi[c] -= nc;
     }
     let ok = |q: [isize; 3]| (0..3).all(|a| (0..n[a] as isize).contains(&q[a]));
-    (ok(lo) && ok(hi)).then(|| [lo, hi].map(|q| flat(n, q.map(|v| v as usize))))
+    (ok(lo) && ok(hi)).then_some([lo, hi])
 }
 
 impl Build<'_> {
@@ -836,7 +864,6 @@ fn step(mut p: [isize; 3], a: usize, by: isize) -> [isize; 3] {
 struct Faces<'a> {
     build: &'a Build<'a>,
     body: &'a CutBody,
-    covered: HashMap<(usize, usize), f64>,
     forced: HashSet<(usize, usize)>,
 }
 
@@ -845,18 +872,13 @@ impl<'a> Faces<'a> {
         Faces {
             build,
             body,
-            covered: body
-                .faces
-                .iter()
-                .map(|f| ((f.c, f.idx), f.fraction))
-                .collect(),
             forced: body.forced.iter().map(|f| (f.c, f.idx)).collect(),
         }
     }
 
     /// The open fraction of the face of point p of component c.
     fn open(&self, c: usize, p: [isize; 3]) -> f64 {
-        self.body.open(c, p, &self.covered)
+        self.body.open(c, p)
     }
 
     /// Whether the face of point p of component c is open and its velocity free.
@@ -881,12 +903,8 @@ impl<'a> Faces<'a> {
                 if self.open(a, face) <= 0.0 {
                     return None;
                 }
-                face_cells(n, self.build.grid.periodic_z, a, face)?;
-                let mut q = step(p, a, 2 * k as isize - 1);
-                if a == 2 && self.build.grid.periodic_z {
-                    q[2] = q[2].rem_euclid(n[2] as isize);
-                }
-                Some((a, k, q))
+                let cells = face_cell_points(n, self.build.grid.periodic_z, a, face)?;
+                Some((a, k, cells[k]))
             })
         })
     }

@@ -323,15 +323,7 @@ impl FlowSolver3 {
 
     /// The loads at the new level; an error if they are not finite.
     fn update_loads(&mut self) -> Result<(), Flow3Error> {
-        self.loads = self.plate.loads(&LoadInput {
-            grid: &self.grid,
-            m: &self.metrics,
-            layout: &self.layout,
-            vel: [&self.vel[0], &self.vel[1], &self.vel[2]],
-            p: &self.p,
-            frame: &self.frame,
-            nu: 1.0 / self.params.re,
-        });
+        self.loads = self.loads_for(&self.p);
         if !self.loads.is_finite() {
             return Err(self.diverged("the force on the plate is not finite".to_string()));
         }
@@ -398,6 +390,21 @@ impl FlowSolver3 {
     /// The loads at the current level.
     pub fn loads(&self) -> Loads3 {
         self.loads
+    }
+
+    /// The loads the plate's read-out gives for the cell pressures `p` (index as [`Self::p`])
+    /// with the current velocities: for comparing read-outs and pressure fields (the solver's own
+    /// loads are those of its own pressure).
+    pub fn loads_for(&self, p: &[f64]) -> Loads3 {
+        self.plate.loads(&LoadInput {
+            grid: &self.grid,
+            m: &self.metrics,
+            layout: &self.layout,
+            vel: [&self.vel[0], &self.vel[1], &self.vel[2]],
+            p,
+            frame: &self.frame,
+            nu: 1.0 / self.params.re,
+        })
     }
 
     /// The loads at the current level as coefficients (lift, drag, side force; roll, yaw, pitch)
