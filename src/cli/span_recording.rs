@@ -50,10 +50,7 @@ impl Recording {
         opts.recording_id = id;
         let span = run.grid.span;
         let half_span = 0.5 * span.length();
-        let title = match span {
-            Span::Finite(b) => format!("{}, span {b} chords", run.config.title()),
-            Span::Periodic(p) => format!("{}, periodic span {p} chords", run.config.title()),
-        };
+        let title = run.title();
         let invocation = super::provenance::invocation(cmd);
         let config_markdown = format!(
             "# {title}\n\n```text\n{}\n```\n\n{cells} cells; {}\n",

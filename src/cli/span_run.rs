@@ -289,7 +289,8 @@ fn finish(
     sum.three.span = Some(run.grid.span);
     sum.three.shape = Some(run.grid.shape);
     sum.three.cells_3d = out.cells;
-    let text = super::provenance::with_version(&report3(run.config, &sum), invocation);
+    let text =
+        super::provenance::with_version(&report3(run.config, &run.title(), &sum), invocation);
     let mut failures = Vec::new();
     let json = super::provenance::summary_json(invocation, &sum);
     if let Some(r) = out.recording {

@@ -42,14 +42,14 @@ fn row(quantity: &str, this_run: String, reference: &str) -> Row {
 
 /// The end-of-run report: the run's figures and the docs/physics.md §8 comparison for its case.
 pub fn report(config: &RunConfig, sum: &Summary) -> String {
-    let mut r = report_figures(config, sum);
+    let mut r = report_figures(config, &config.title(), sum);
     r.push_str(&comparison(config, sum));
     r
 }
 
-/// The report's figures without the comparison with the dissertation.
-pub fn report_figures(config: &RunConfig, sum: &Summary) -> String {
-    let mut r = header(config, sum);
+/// The report's figures under `title` without the comparison with the dissertation.
+pub fn report_figures(config: &RunConfig, title: &str, sum: &Summary) -> String {
+    let mut r = header(title, sum);
     case_part(config, sum, &mut r);
     r
 }
@@ -69,7 +69,7 @@ fn case_part(config: &RunConfig, sum: &Summary, r: &mut String) -> Vec<Row> {
 }
 
 /// Title, status, cost, developed window and the coefficient means.
-fn header(config: &RunConfig, sum: &Summary) -> String {
+fn header(title: &str, sum: &Summary) -> String {
     format!(
         "platefall {} — {}\n\
          status {}: {} steps to t = {:.3} in {:.1} s ({} cells, {:.0} ns/cell/step)\n\
@@ -77,7 +77,7 @@ fn header(config: &RunConfig, sum: &Summary) -> String {
          mean C_L {}  C_D {}  C_M {}   C_L band [{}, {}]   max C_D {}\n\
          {}\n",
         sum.case,
-        config.title(),
+        title,
         sum.status,
         sum.steps,
         sum.t_reached,

@@ -153,16 +153,18 @@ fn flight_keys(k: &mut Keys3, rows: &[Attitude], t_release: f64, (t0, t1): (f64,
     }
 }
 
-/// The end-of-run text of a 3-D run: the 2-D report of its projection and the 3-D keys.
-pub fn report3(config: &RunConfig, sum: &Summary3) -> String {
+/// The end-of-run text of a 3-D run titled `title`: the 2-D report of its projection and the
+/// 3-D keys.
+pub fn report3(config: &RunConfig, title: &str, sum: &Summary3) -> String {
     let k = &sum.three;
-    let mut r = report_figures(config, &sum.planar);
-    if let Some(shape) = k.shape.filter(|s| s.is_curved()) {
+    let mut r = report_figures(config, title, &sum.planar);
+    if let (Some(shape), Some(span)) = (k.shape.filter(|s| s.is_curved()), k.span) {
+        let t = config.grid.shape.thickness();
         r.push_str(&format!(
-            "3-D body: {shape:?} in the box 1 × {} × {} chords; coefficients on its planform \
-             area (docs/three-d.md \"Bodies\")\n",
-            config.grid.shape.thickness(),
-            k.span.map_or(f64::NAN, |s| s.length()),
+            "3-D body: {} in the box 1 × {t} × {} chords; coefficients on its planform area \
+             (docs/three-d.md \"Bodies\")\n",
+            shape.describe(t, span),
+            span.length(),
         ));
     } else {
         r.push_str(&comparison(config, &sum.planar));

@@ -10,6 +10,7 @@
 use super::error::Flow3Error;
 use super::shape::Shape3;
 use crate::grid::{intervals_for_growth, stretched_offsets};
+use crate::shape::round4;
 
 /// The span of the plate.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -26,6 +27,29 @@ impl Span {
     pub fn length(&self) -> f64 {
         match *self {
             Span::Finite(b) | Span::Periodic(b) => b,
+        }
+    }
+}
+
+/// Names for titles: a body of the grid's shapes is described with its size here, where the
+/// span is known.
+impl Shape3 {
+    /// The body's name with its size, for titles: thickness `t` and `span` in chords (a sphere
+    /// and a circular disk by name).
+    pub fn describe(self, t: f64, span: Span) -> String {
+        let (t, b) = (round4(t), round4(span.length()));
+        let along = |name: String| match span {
+            Span::Finite(_) => format!("{name} of span {b} c"),
+            Span::Periodic(_) => format!("{name}, periodic over {b} c"),
+        };
+        match self {
+            Shape3::Box => along(format!("plate t/c = {t}")),
+            Shape3::Ellipsoid if t == 1.0 && b == 1.0 => "sphere".to_string(),
+            Shape3::Ellipsoid => format!("ellipsoid 1 × {t} × {b} c"),
+            Shape3::SpanCylinder if t == 1.0 => along("circular cylinder".to_string()),
+            Shape3::SpanCylinder => along(format!("elliptic cylinder t/c = {t}")),
+            Shape3::Disk if b == 1.0 => format!("circular disk t/c = {t}"),
+            Shape3::Disk => format!("elliptic disk 1 × {b} c, t/c = {t}"),
         }
     }
 }
@@ -272,4 +296,31 @@ fn axis(lo: f64, hi: f64, core: usize, offsets: &[f64]) -> Vec<f64> {
     v.push(hi);
     v.extend(offsets.iter().skip(1).map(|o| hi + o));
     v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_say_which_body_and_its_size() {
+        use Shape3::*;
+        use Span::{Finite, Periodic};
+        let name = |shape: Shape3, t: f64, span: Span| shape.describe(t, span);
+        assert_eq!(name(Ellipsoid, 1.0, Finite(1.0)), "sphere");
+        assert_eq!(name(Ellipsoid, 0.5, Finite(2.0)), "ellipsoid 1 × 0.5 × 2 c");
+        let periodic = "circular cylinder, periodic over 0.125 c";
+        assert_eq!(name(SpanCylinder, 1.0, Periodic(0.125)), periodic);
+        let elliptic = "elliptic cylinder t/c = 0.25 of span 3 c";
+        assert_eq!(name(SpanCylinder, 0.25, Finite(3.0)), elliptic);
+        assert_eq!(name(Disk, 0.1, Finite(1.0)), "circular disk t/c = 0.1");
+        assert_eq!(
+            name(Disk, 0.1, Finite(2.0)),
+            "elliptic disk 1 × 2 c, t/c = 0.1"
+        );
+        assert_eq!(
+            name(Box, 0.0625, Finite(2.67)),
+            "plate t/c = 0.0625 of span 2.67 c"
+        );
+    }
 }

@@ -231,7 +231,8 @@ impl Shape {
     }
 }
 
-fn round4(x: f64) -> f64 {
+/// `x` rounded to four decimals, for names.
+pub(crate) fn round4(x: f64) -> f64 {
     (x * 1e4).round() / 1e4
 }
 

@@ -244,6 +244,16 @@ impl RunConfig {
     /// plate and fluid of a coupled case), the Reynolds number and the resolution, with numbers
     /// rounded to four significant digits.
     pub fn title(&self) -> String {
+        // A rectangle is the plate of every case unless said otherwise; other sections are named.
+        let section = match &self.grid.shape {
+            Shape::Rect { .. } => None,
+            shape => Some(shape.describe()),
+        };
+        self.title_naming(section)
+    }
+
+    /// The title with `body` named after the case (none: the plate, unnamed).
+    pub fn title_naming(&self, body: Option<String>) -> String {
         let r = |x: f64| rounded(x);
         let case = match self.case {
             Case::Static { alpha, .. } => format!("static plate at α = {} rad", r(alpha)),
@@ -286,11 +296,7 @@ impl RunConfig {
             Some(b) if self.case.is_coupled() => format!(", {}", b.source.describe(&b.props)),
             _ => String::new(),
         };
-        // A rectangle is the plate of every case unless said otherwise; other sections are named.
-        let section = match &self.grid.shape {
-            Shape::Rect { .. } => String::new(),
-            shape => format!(", {}", shape.describe()),
-        };
+        let section = body.map_or(String::new(), |b| format!(", {b}"));
         format!(
             "{case}{section}{plate}, Re {}, N = {}",
             r(self.flow.re),

@@ -50,6 +50,21 @@ impl<'a> Run3<'a> {
         Run3 { config, grid }
     }
 
+    /// The run's one-line title: the 2-D title with the span, or with the curved body named
+    /// in place of the section.
+    pub fn title(&self) -> String {
+        let g = &self.grid;
+        if g.shape.is_curved() {
+            return self
+                .config
+                .title_naming(Some(g.shape.describe(g.thickness, g.span)));
+        }
+        match g.span {
+            Span::Finite(b) => format!("{}, span {b} chords", self.config.title()),
+            Span::Periodic(p) => format!("{}, periodic span {p} chords", self.config.title()),
+        }
+    }
+
     /// The flow's parameters: the run's Reynolds number and Courant number.
     pub fn params(&self) -> FlowParams3 {
         FlowParams3 {
