@@ -223,8 +223,7 @@ impl CutBody {
             v.sort_unstable_by_key(|x| x.0);
             v
         });
-        let open: HashSet<(usize, usize)> = body.faces.iter().map(|f| (f.c, f.idx)).collect();
-        let (held_open, held) = body.held.iter().partition(|h| open.contains(&(h.c, h.idx)));
+        let (held_open, held) = body.held.iter().partition(|h| body.is_cut(h.c, h.idx));
         (body.held, body.held_open) = (held, held_open);
         let extended: Vec<Forced> = body
             .held_open
@@ -242,16 +241,22 @@ impl CutBody {
         self.held_index[c].binary_search(&self.layout.at(p)).is_ok()
     }
 
+    /// The covered fraction of cut face `idx` of component c, or none if the face is not cut.
+    fn cut_fraction(&self, c: usize, idx: usize) -> Option<f64> {
+        let k = self.covered[c].binary_search_by_key(&idx, |x| x.0).ok()?;
+        Some(self.covered[c][k].1)
+    }
+
+    /// Whether face `idx` of component c is cut (partly covered).
+    fn is_cut(&self, c: usize, idx: usize) -> bool {
+        self.cut_fraction(c, idx).is_some()
+    }
+
     /// The open fraction of the face of point p of component c: 0 held, 1 uncovered.
     fn open(&self, c: usize, p: [isize; 3]) -> f64 {
         let p = self.canonical(c, p);
-        let idx = self.layout.at(p);
-        let covered = match self.covered[c].binary_search_by_key(&idx, |x| x.0) {
-            Ok(k) => self.covered[c][k].1,
-            Err(_) if self.is_held(c, p) => 1.0,
-            Err(_) => 0.0,
-        };
-        1.0 - covered
+        let whole = if self.is_held(c, p) { 1.0 } else { 0.0 };
+        1.0 - self.cut_fraction(c, self.layout.at(p)).unwrap_or(whole)
     }
 
     /// The point itself, or for the periodic copy of a w face (k = nz) the face it copies
